@@ -1,0 +1,170 @@
+"""Command-line interface: parse, validate everything, call a stage, report.
+
+User errors (bad scene file, bad option, unusable variant) end with one line
+on stderr and exit code 2; no traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+import warnings
+from pathlib import Path
+
+from . import __version__
+from .config import Scene, SceneError, load_scene, with_overrides
+
+
+class UserError(Exception):
+    """An error the user can fix; printed as one line."""
+
+
+def _frame_range(text: str) -> tuple[int, int]:
+    try:
+        start, end = (int(part) for part in text.split(":"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected START:END (e.g. 0:3), got {text!r}") from None
+    return start, end
+
+
+def _resolution(text: str) -> tuple[int, int]:
+    try:
+        width, height = (int(part) for part in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT (e.g. 320x180), got {text!r}") from None
+    return width, height
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="oceanrender", description="Physically based spectral renderer for the sea.")
+    parser.add_argument("--version", action="version", version=f"oceanrender {__version__}")
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    render = commands.add_parser("render", help="render a scene's image sequence (EXR + PNG per frame)",
+                                 description="Render frames of SCENE into OUT/<scene name>/frame_NNNN.{exr,png}; "
+                                             "frames already written intact are skipped (resume).")
+    render.add_argument("scene", type=Path, help="scene file (TOML), e.g. scenes/open_ocean.toml")
+    render.add_argument("--frames", type=_frame_range, metavar="A:B", help="half-open frame range (default: the scene's)")
+    render.add_argument("--spp", type=int, metavar="N", help="samples per pixel (default: the scene's)")
+    render.add_argument("--resolution", type=_resolution, metavar="WxH", help="image size in pixels")
+    render.add_argument("--out", type=Path, metavar="DIR", help="output root (default: the scene's, 'outputs')")
+    render.add_argument("--variant", metavar="V", help="Mitsuba variant: 'auto' or e.g. llvm_ad_spectral")
+    render.add_argument("--no-progress", action="store_true", help="no progress bar")
+
+    commands.add_parser("info", help="versions, usable Mitsuba variants and the LLVM library",
+                        description="Report versions and probe which Mitsuba spectral variants work here.")
+    return parser
+
+
+def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
+    """Apply --frames/--spp/--resolution/--out/--variant, validated like the file."""
+    output = {}
+    if args.frames is not None:
+        output["frames"] = args.frames
+    if args.spp is not None:
+        output["spp"] = args.spp
+    if args.resolution is not None:
+        output["resolution"] = args.resolution
+    if args.out is not None:
+        output["directory"] = str(args.out)
+    render = {"variant": args.variant} if args.variant else {}
+    return with_overrides(scene, "command line", output=output, render=render)
+
+
+def check_resources(scene: Scene, source: str) -> None:
+    """Load the data the scene names, so a bad table fails before any work."""
+    from .optics.tables import SpectralDataError  # noqa: PLC0415
+    from .optics.water import pure_seawater_iops  # noqa: PLC0415
+
+    try:
+        pure_seawater_iops(scene.water.iop_table)
+    except SpectralDataError as exc:
+        raise UserError(f"{source}: [water] iop_table: {exc}") from None
+
+
+def activate(requested: str):
+    from .runtime.variants import VariantError, activate_variant  # noqa: PLC0415
+
+    try:
+        return activate_variant(requested)
+    except VariantError as exc:
+        raise UserError(str(exc)) from None
+
+
+def cmd_render(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    scene = scene_with_cli_overrides(scene, args)
+    check_resources(scene, str(args.scene))
+    runtime = activate(scene.render.variant)
+    out_dir = Path(scene.output.directory) / scene.name
+    start, end = scene.output.frames
+    width, height = scene.output.resolution
+    print(f"oceanrender {__version__}: {scene.name}, frames {start}:{end}, {width}x{height}, "
+          f"{scene.output.spp} spp, variant {runtime.variant}"
+          + (f" (LLVM {runtime.llvm_library})" if runtime.llvm_library else "") + f" -> {out_dir}", flush=True)
+
+    from tqdm import tqdm  # noqa: PLC0415
+
+    from .pipeline import render_sequence  # noqa: PLC0415
+
+    bar = tqdm(total=end - start, unit="frame", disable=args.no_progress, dynamic_ncols=True)
+
+    def on_frame(frame: int, seconds: float, skipped: bool) -> None:
+        bar.set_postfix_str(f"frame {frame}: " + ("exists, skipped" if skipped else f"{seconds:.1f} s"))
+        bar.update(1)
+
+    tic = time.perf_counter()
+    with bar:
+        report = render_sequence(scene, out_dir, runtime.variant, on_frame=on_frame)
+    total = time.perf_counter() - tic
+    stages = ", ".join(f"{k} {v:.2f} s" for k, v in report.stage_seconds.items())
+    print(f"rendered {len(report.rendered)} frame(s), skipped {len(report.skipped)} already complete, "
+          f"in {total:.1f} s (setup {report.setup_seconds:.1f} s; {stages})")
+    if report.repaired_pixels:
+        print(f"warning: {report.repaired_pixels} non-finite pixel(s) repaired from their neighbours", file=sys.stderr)
+    return 0
+
+
+def cmd_info(_: argparse.Namespace) -> int:
+    import colour  # noqa: PLC0415
+    import drjit  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+    import numpy  # noqa: PLC0415
+
+    from .runtime.variants import SPECTRAL_VARIANTS, cuda_driver_present, find_llvm_library, probe_variant  # noqa: PLC0415
+
+    print(f"oceanrender {__version__}")
+    print(f"python {sys.version.split()[0]}, numpy {numpy.__version__}, mitsuba {mi.__version__}, "
+          f"drjit {drjit.__version__}, colour-science {colour.__version__}")
+    llvm = find_llvm_library()
+    print(f"libLLVM for drjit: {llvm or 'none found (apt-get install libllvm19)'}")
+    for variant in SPECTRAL_VARIANTS:
+        if variant.startswith("cuda") and not cuda_driver_present():
+            verdict = "no NVIDIA driver (libcuda) found"
+        elif variant.startswith("llvm") and llvm is None:
+            verdict = "no usable libLLVM"
+        else:
+            verdict = probe_variant(variant, llvm)
+        print(f"  {variant:18s} {'works' if verdict == 'ok' else 'unusable: ' + verdict}")
+    return 0
+
+
+COMMANDS = {"render": cmd_render, "info": cmd_info}
+
+
+def main(argv: list[str] | None = None) -> int:
+    warnings.filterwarnings("ignore", message=".*Matplotlib.*")
+    args = build_parser().parse_args(argv)
+    try:
+        return COMMANDS[args.command](args)
+    except (SceneError, UserError) as exc:
+        print(f"oceanrender: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("oceanrender: interrupted; finished frames are kept, rerun to resume", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

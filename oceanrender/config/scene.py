@@ -1,0 +1,253 @@
+"""Scene files: TOML parsed into typed, immutable, validated settings.
+
+A scene file is data only (``tomllib``: nothing in it is executed). Every
+section is a frozen pydantic model that forbids unknown keys and checks
+ranges, so a bad file is refused before any work starts, with one line
+naming the file, the key and what was expected. Defaults live here and only
+here.
+
+Conventions: z up, +x east, +y north; lengths in m, angles in degrees in the
+file (converted where used), wind in m s⁻¹, luminance in cd m⁻².
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+
+
+class SceneError(ValueError):
+    """A scene file that cannot be used; the message is one line for the user."""
+
+
+class _Section(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=False)
+
+
+Vec3 = tuple[float, float, float]
+
+
+class OutputSettings(_Section):
+    """What to render and where [frames, pixels, samples]."""
+
+    frames: tuple[Annotated[int, Field(ge=0)], Annotated[int, Field(ge=1)]] = Field(
+        (0, 3), description="half-open frame range [start, end)"
+    )
+    fps: float = Field(24.0, gt=0, le=1000, description="frames per second [s⁻¹]")
+    resolution: tuple[Annotated[int, Field(ge=1, le=16384)], Annotated[int, Field(ge=1, le=16384)]] = (320, 180)
+    spp: int = Field(32, ge=1, le=1 << 20, description="samples per pixel")
+    directory: str = Field("outputs", min_length=1, description="output root; frames go to <directory>/<scene name>/")
+
+    @field_validator("frames")
+    @classmethod
+    def _ordered(cls, value: tuple[int, int]) -> tuple[int, int]:
+        if value[1] <= value[0]:
+            raise ValueError(f"expected [start, end) with end > start, got {list(value)}")
+        return value
+
+
+class RenderSettings(_Section):
+    """Light transport settings."""
+
+    variant: str = Field("auto", description="'auto' or a Mitsuba spectral variant")
+    integrator: Literal["volpath", "volpathmis"] = "volpath"
+    max_depth: int = Field(12, ge=2, le=1024, description="maximum path length [vertices]")
+    white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
+    seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")
+
+    @field_validator("variant")
+    @classmethod
+    def _spectral(cls, value: str) -> str:
+        if value != "auto" and "spectral" not in value:
+            raise ValueError(f"expected 'auto' or a spectral variant (e.g. 'llvm_ad_spectral'), got {value!r}")
+        return value
+
+
+class OceanSettings(_Section):
+    """Open-sea geometry: Tessendorf FFT ocean."""
+
+    spectrum: Literal["Phillips 2001"] = "Phillips 2001"
+    wind_speed: float = Field(7.0, gt=0, le=60, description="wind speed [m s⁻¹]")
+    wind_direction: float = Field(30.0, ge=-360, le=360, description="direction the wind blows toward, counter-clockwise from +x (east) [deg]")
+    phillips_alpha: float = Field(8.1e-3, gt=0, le=0.1, description="Phillips constant α [-]")
+    small_wave_length: float = Field(0.02, ge=0, le=10, description="suppression length ℓ of small waves [m]")
+    patch_size: float = Field(128.0, gt=0, le=100_000, description="side of the periodic patch [m]")
+    resolution: int = Field(256, ge=8, le=8192, description="FFT grid points per side")
+    choppiness: float = Field(0.8, ge=0, le=3, description="horizontal displacement scale λ [-]")
+    seed: int = Field(1, ge=0, description="random seed of the wave amplitudes")
+
+    @field_validator("resolution")
+    @classmethod
+    def _even(cls, value: int) -> int:
+        if value % 2:
+            raise ValueError(f"expected an even number of grid points, got {value}")
+        return value
+
+
+class WaterSettings(_Section):
+    """The water body and its medium."""
+
+    depth: float = Field(50.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]")
+    ior: float = Field(1.333, ge=1.0, le=2.0, description="refractive index of water [-]")
+    iop_table: str = Field("pure_seawater.csv", min_length=1, description="table of a, b [m⁻¹] in spectra/")
+    surface_roughness: float | Literal["auto"] = Field(
+        "auto", description="Beckmann α of the surface [-], or 'auto' for the slopes of the waves finer than the mesh"
+    )
+
+    @field_validator("surface_roughness")
+    @classmethod
+    def _roughness(cls, value: float | str) -> float | str:
+        if not isinstance(value, str) and not 0 <= value <= 1:
+            raise ValueError(f"expected 'auto' or a Beckmann α in [0, 1], got {value}")
+        return value
+
+
+class SunSettings(_Section):
+    """Sun and sky: Mitsuba's ``sunsky`` (Hosek & Wilkie 2012/2013)."""
+
+    elevation: float = Field(40.0, gt=0, le=90, description="sun elevation above the horizon [deg]")
+    azimuth: float = Field(200.0, ge=-360, le=360, description="sun azimuth, clockwise from north (+y) [deg]")
+    turbidity: float = Field(3.0, ge=1, le=10, description="atmospheric turbidity [-]")
+    ground_albedo: float = Field(0.1, ge=0, le=1, description="ground albedo of the sky model [-]")
+    sun_scale: float = Field(1.0, ge=0, description="scale of the solar radiance [-]")
+    sky_scale: float = Field(1.0, ge=0, description="scale of the sky radiance [-]")
+
+
+class CameraSettings(_Section):
+    """Pinhole camera (perspective)."""
+
+    position: Vec3 = (0.0, 0.0, 5.0)
+    target: Vec3 = (0.0, 40.0, 0.0)
+    fov: float = Field(60.0, gt=0, lt=180, description="horizontal field of view [deg]")
+
+    @model_validator(mode="after")
+    def _distinct(self) -> "CameraSettings":
+        if self.position == self.target:
+            raise ValueError("camera target must differ from its position")
+        return self
+
+
+class VisionSettings(_Section):
+    """The vision model Φ: brightness and chromatic adaptation, display."""
+
+    brightness: Literal["Ward 1994", "Ferwerda 1996"] = "Ward 1994"
+    chromatic_transform: Literal["Von Kries", "Bradford", "CAT02", "CAT16", "XYZ Scaling"] = "Von Kries"
+    adaptation_luminance: float | Literal["frame"] = Field(
+        "frame", description="world adaptation luminance [cd m⁻²], or 'frame' for each frame's log-average"
+    )
+    display_luminance: float = Field(100.0, gt=0, le=10_000, description="display white luminance [cd m⁻²]")
+
+    @field_validator("adaptation_luminance")
+    @classmethod
+    def _positive(cls, value: float | str) -> float | str:
+        if not isinstance(value, str) and not value > 0:
+            raise ValueError(f"expected 'frame' or a luminance > 0 cd/m², got {value}")
+        return value
+
+
+class Scene(_Section):
+    """A whole scene; ``name`` defaults to the file's stem."""
+
+    name: str = Field(..., min_length=1, pattern=r"^[A-Za-z0-9_.-]+$")
+    output: OutputSettings = OutputSettings()
+    render: RenderSettings = RenderSettings()
+    ocean: OceanSettings = OceanSettings()
+    water: WaterSettings = WaterSettings()
+    sun: SunSettings = SunSettings()
+    camera: CameraSettings = CameraSettings()
+    vision: VisionSettings = VisionSettings()
+
+
+def _key_path(location: tuple) -> str:
+    parts: list[str] = []
+    for item in location:
+        if isinstance(item, int) and parts:
+            parts[-1] += f"[{item}]"
+        else:
+            parts.append(str(item))
+    if not parts:
+        return "(top level)"
+    if len(parts) == 1:
+        return parts[0]
+    return f"[{'.'.join(parts[:-1])}] {parts[-1]}"
+
+
+def _field_help(location: tuple) -> str | None:
+    """The description (meaning and unit) of the field at ``location``."""
+    model: type[BaseModel] = Scene
+    info = None
+    for item in location:
+        if isinstance(item, int):
+            continue
+        fields = getattr(model, "model_fields", None)
+        if not fields or item not in fields:
+            return None
+        info = fields[item]
+        model = info.annotation if isinstance(info.annotation, type) else None
+    return info.description if info is not None else None
+
+
+def _describe(error: dict) -> str:
+    kind = error["type"]
+    location = error["loc"]
+    if kind == "extra_forbidden":
+        return "unknown key"
+    if kind == "missing":
+        return "expected more values" if location and isinstance(location[-1], int) else "required key is missing"
+    message = error["msg"].removeprefix("Value error, ")
+    shown = error.get("input")
+    if "got" not in message and not (isinstance(shown, (dict, list)) and len(repr(shown)) > 60):
+        message = f"{message} (got {shown!r})"
+    meaning = _field_help(location)
+    return f"{message}; {meaning}" if meaning else message
+
+
+def scene_from_dict(data: dict, source: str = "<dict>") -> Scene:
+    """Validate a parsed scene mapping; raise :class:`SceneError` on the first problem."""
+    try:
+        return Scene.model_validate(data)
+    except ValidationError as exc:
+        first = exc.errors()[0]
+        raise SceneError(f"{source}: {_key_path(first['loc'])}: {_describe(first)}") from None
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Read and validate a TOML scene file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The scene file.
+
+    Raises
+    ------
+    SceneError
+        One line naming the file, the key and what was expected.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read scene file ({exc.strerror or exc})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+    data.setdefault("name", path.stem)
+    return scene_from_dict(data, str(path))
+
+
+def with_overrides(scene: Scene, source: str = "command line", **sections: dict) -> Scene:
+    """Return a copy of ``scene`` with some keys replaced, validated again.
+
+    ``with_overrides(scene, output={"spp": 4})`` validates as a file would, so
+    command-line overrides are held to the same ranges.
+    """
+    data = scene.model_dump()
+    for section, values in sections.items():
+        if values:
+            data[section] = {**data[section], **values}
+    return scene_from_dict(data, source)

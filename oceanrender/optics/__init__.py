@@ -1,0 +1,1 @@
+"""Water optics: spectral tables and inherent optical properties."""

@@ -1,0 +1,56 @@
+"""Inherent optical properties (IOPs) of the water body.
+
+Issue-2 scope: pure sea water only (absorption a_w and scattering b_sw from
+``spectra/pure_seawater.csv``). Coefficients in m⁻¹, wavelengths in nm.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .tables import read_spectral_table
+
+
+@dataclass(frozen=True)
+class WaterIOPs:
+    """Spectral absorption and scattering of a homogeneous water body.
+
+    Attributes
+    ----------
+    wavelengths : ndarray   Wavelengths [nm].
+    absorption : ndarray    Absorption coefficient a(λ) [m⁻¹].
+    scattering : ndarray    Scattering coefficient b(λ) [m⁻¹].
+    source : str            Provenance (the table's header).
+    """
+
+    wavelengths: np.ndarray
+    absorption: np.ndarray
+    scattering: np.ndarray
+    source: str
+
+    @property
+    def attenuation(self) -> np.ndarray:
+        """Beam attenuation c = a + b [m⁻¹]."""
+        return self.absorption + self.scattering
+
+    @property
+    def single_scattering_albedo(self) -> np.ndarray:
+        """ω0 = b / c [-], in [0, 1]."""
+        return self.scattering / self.attenuation
+
+
+def pure_seawater_iops(table: str = "pure_seawater.csv") -> WaterIOPs:
+    """IOPs of pure sea water from a table in ``spectra/`` [m⁻¹].
+
+    The default table is Williamson & Hollins (2022) absorption with
+    Morel (1974) scattering; see its header and ``spectra/make_pure_seawater.py``.
+    """
+    data = read_spectral_table(table, required=("a_per_m", "b_per_m"))
+    return WaterIOPs(
+        wavelengths=data.wavelengths,
+        absorption=data.columns["a_per_m"],
+        scattering=data.columns["b_per_m"],
+        source=data.header,
+    )

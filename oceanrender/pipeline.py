@@ -1,0 +1,216 @@
+"""The sequence runner: scene → geometry → Mitsuba → vision model → files.
+
+Stages are pure functions in their sub-packages; this module strings them
+together for a frame range, does the file I/O and reports timings. The
+Mitsuba variant must already be active (the CLI activates it).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from . import __version__
+from .config import Scene
+from .geometry.fft_ocean import FFTOcean, OceanGrid
+from .geometry.mesh import water_body_faces, water_body_vertices
+from .geometry.roughness import beckmann_alpha, unresolved_slope_variance
+from .io.frames import frame_is_complete, write_exr, write_png
+from .optics.water import pure_seawater_iops
+from .render.renderer import WaterRenderer, adapting_white_XYZ
+from .vision.brightness import adaptation_luminance_log_average
+from .vision.display import encode_sRGB_8bit
+from .vision.model import VisionModel
+
+#: Stages timed per frame, in order.
+STAGES = ("geometry", "update", "render", "vision", "write")
+
+
+@dataclass(frozen=True)
+class FramePaths:
+    """Where one frame's files go."""
+
+    exr: Path
+    png: Path
+
+
+def frame_paths(out_dir: str | Path, frame: int) -> FramePaths:
+    """``<out_dir>/frame_NNNN.exr`` and ``.png``."""
+    out_dir = Path(out_dir)
+    return FramePaths(exr=out_dir / f"frame_{frame:04d}.exr", png=out_dir / f"frame_{frame:04d}.png")
+
+
+def ocean_for_scene(scene: Scene) -> FFTOcean:
+    """The FFT ocean of a scene (SI units; wind direction converted to rad)."""
+    ocean = scene.ocean
+    return FFTOcean(
+        grid=OceanGrid(resolution=ocean.resolution, patch_size=ocean.patch_size),
+        wind_speed=ocean.wind_speed,
+        wind_direction=math.radians(ocean.wind_direction),
+        alpha=ocean.phillips_alpha,
+        small_wave_length=ocean.small_wave_length,
+        seed=ocean.seed,
+        choppiness=ocean.choppiness,
+        depth=scene.water.depth,
+    )
+
+
+def surface_roughness(scene: Scene) -> float:
+    """Beckmann α of the water surface [-]: the scene's, or the unresolved waves' slopes."""
+    if scene.water.surface_roughness != "auto":
+        return float(scene.water.surface_roughness)
+    ocean = scene.ocean
+    variance = unresolved_slope_variance(
+        ocean.spectrum, ocean.resolution, ocean.patch_size, wind_speed=ocean.wind_speed,
+        wind_direction=math.radians(ocean.wind_direction), alpha=ocean.phillips_alpha,
+        small_wave_length=ocean.small_wave_length,
+    )
+    return beckmann_alpha(variance)
+
+
+def vision_for_scene(scene: Scene) -> VisionModel:
+    """The vision model Φ configured by the scene's ``[vision]`` section."""
+    v = scene.vision
+    return VisionModel(brightness=v.brightness, chromatic_transform=v.chromatic_transform,
+                       display_max_luminance=v.display_luminance)
+
+
+def adaptation_luminance(scene: Scene, xyz: np.ndarray) -> float:
+    """World adaptation luminance [cd m⁻²]: fixed by the scene, or the frame's log-average."""
+    value = scene.vision.adaptation_luminance
+    return adaptation_luminance_log_average(xyz[..., 1]) if value == "frame" else float(value)
+
+
+@dataclass
+class SequenceReport:
+    """What a run did: frames rendered and skipped, seconds per stage."""
+
+    variant: str
+    rendered: list[int] = field(default_factory=list)
+    skipped: list[int] = field(default_factory=list)
+    repaired_pixels: int = 0
+    setup_seconds: float = 0.0
+    stage_seconds: dict[str, float] = field(default_factory=lambda: {s: 0.0 for s in STAGES})
+
+    @property
+    def frame_seconds(self) -> float:
+        return sum(self.stage_seconds.values())
+
+
+class Sequence:
+    """A scene prepared for rendering frames: ocean, renderer, adapting white.
+
+    Building it loads the Mitsuba scene once; :meth:`render_frame` then only
+    updates the water mesh.
+    """
+
+    def __init__(self, scene: Scene, variant: str, spp: int | None = None, resolution: tuple[int, int] | None = None):
+        self.scene = scene
+        self.variant = variant
+        self.spp = int(spp or scene.output.spp)
+        self.resolution = tuple(resolution or scene.output.resolution)
+        self.ocean = ocean_for_scene(scene)
+        self.faces = water_body_faces(scene.ocean.resolution)
+        self.iops = pure_seawater_iops(scene.water.iop_table)
+        positions, normals = self.geometry(scene.output.frames[0])
+        self.roughness = surface_roughness(scene)
+        self.renderer = WaterRenderer.build(scene, self.iops, self.faces, positions, normals, roughness=self.roughness,
+                                            spp=self.spp, resolution=self.resolution)
+        self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
+        self.vision = vision_for_scene(scene)
+
+    def time_of(self, frame: int) -> float:
+        """Frame time t = frame / fps [s]."""
+        return frame / self.scene.output.fps
+
+    def geometry(self, frame: int) -> tuple[np.ndarray, np.ndarray]:
+        """Water-body vertex positions [m] and normals for a frame."""
+        fields = self.ocean.fields(self.time_of(frame))
+        return water_body_vertices(fields, self.scene.ocean.patch_size, self.scene.water.depth)
+
+    def metadata(self, frame: int, repaired: int, adaptation: float) -> dict[str, object]:
+        import mitsuba  # noqa: PLC0415
+        import colour  # noqa: PLC0415
+
+        return {
+            "scene": self.scene.name,
+            "frame": frame,
+            "time_s": self.time_of(frame),
+            "spp": self.spp,
+            "variant": self.variant,
+            "oceanrender_version": __version__,
+            "mitsuba_version": mitsuba.__version__,
+            "colour_version": colour.__version__,
+            "white_XYZ_cd_m2": " ".join(f"{v:.6g}" for v in self.white_xyz),
+            "adaptation_luminance_cd_m2": adaptation,
+            "brightness_operator": self.vision.brightness,
+            "chromatic_transform": self.vision.chromatic_transform,
+            "display_luminance_cd_m2": self.vision.display_max_luminance,
+            "surface_roughness_beckmann_alpha": self.roughness,
+            "repaired_pixels": repaired,
+            "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
+        }
+
+    def render_frame(self, frame: int, paths: FramePaths, seconds: dict[str, float]) -> int:
+        """Render, adapt and write one frame; returns the count of repaired pixels."""
+        tic = time.perf_counter()
+        positions, normals = self.geometry(frame)
+        tac = time.perf_counter()
+        seconds["geometry"] += tac - tic
+        self.renderer.update_water(positions, normals)
+        tic = time.perf_counter()
+        seconds["update"] += tic - tac
+        xyz, repaired = self.renderer.render_xyz(self.spp, seed=self.scene.render.seed + frame)
+        tac = time.perf_counter()
+        seconds["render"] += tac - tic
+        adaptation = adaptation_luminance(self.scene, xyz)
+        rgb = self.vision.apply(xyz, self.white_xyz, adaptation)
+        rgb8 = encode_sRGB_8bit(rgb)
+        tic = time.perf_counter()
+        seconds["vision"] += tic - tac
+        channels = {name: xyz[..., i] for i, name in enumerate("XYZ")}
+        channels.update({name: rgb[..., i] for i, name in enumerate("RGB")})
+        write_exr(paths.exr, channels, self.metadata(frame, repaired, adaptation))
+        write_png(paths.png, rgb8)
+        seconds["write"] += time.perf_counter() - tic
+        return repaired
+
+
+def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tuple[int, int] | None = None,
+                    spp: int | None = None, resolution: tuple[int, int] | None = None,
+                    on_frame: Callable[[int, float, bool], None] | None = None) -> SequenceReport:
+    """Render frames [start, end) of ``scene`` into ``out_dir``; resume where files exist.
+
+    A frame whose EXR and PNG both read back intact is skipped, so a killed
+    run loses at most the frame in flight. ``on_frame(frame, seconds, skipped)``
+    is called after each frame (for progress display).
+    """
+    start, end = frames or scene.output.frames
+    size = tuple(resolution or scene.output.resolution)
+    report = SequenceReport(variant=variant)
+    todo = []
+    for frame in range(start, end):
+        paths = frame_paths(out_dir, frame)
+        if frame_is_complete(paths.exr, paths.png, size):
+            report.skipped.append(frame)
+            if on_frame:
+                on_frame(frame, 0.0, True)
+        else:
+            todo.append(frame)
+    if not todo:
+        return report
+    tic = time.perf_counter()
+    sequence = Sequence(scene, variant, spp=spp, resolution=size)
+    report.setup_seconds = time.perf_counter() - tic
+    for frame in todo:
+        tic = time.perf_counter()
+        report.repaired_pixels += sequence.render_frame(frame, frame_paths(out_dir, frame), report.stage_seconds)
+        report.rendered.append(frame)
+        if on_frame:
+            on_frame(frame, time.perf_counter() - tic, False)
+    return report

@@ -1,0 +1,154 @@
+"""The Mitsuba scene of a sequence: loaded once, geometry updated per frame.
+
+Per frame only the water mesh's vertex positions and normals change, through
+``mi.traverse(scene)`` + ``update()``; the scene is never reloaded.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..config import Scene
+from ..optics.water import WaterIOPs
+from .scene import (
+    perspective_sensor,
+    sunsky_emitter,
+    volumetric_integrator,
+    water_medium,
+    water_surface_bsdf,
+    xyz_film,
+)
+
+#: Maximum luminous efficacy of radiation for photopic vision [lm W⁻¹] (CIE 2004 / SI definition of the candela).
+K_M = 683.0
+
+#: Identifier of the water body in the Mitsuba scene.
+WATER_ID = "water"
+
+
+def film_to_absolute_XYZ(film: np.ndarray) -> np.ndarray:
+    """Absolute XYZ [cd m⁻² for Y] from specfilm channels ∫L x̄ dλ etc. [W m⁻² sr⁻¹].
+
+    Y = K_m ∫ L(λ) ȳ(λ) dλ (CIE 015:2018 Eq. 7.1 with K_m = 683 lm W⁻¹).
+    """
+    return K_M * np.asarray(film, dtype=np.float64)
+
+
+def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
+    """Replace non-finite pixels by the mean of their finite 3×3 neighbours.
+
+    Returns the repaired (H, W, C) image and how many pixels were repaired.
+    NOTE: Mitsuba's volpath occasionally returns NaN in a handful of pixels
+    for media inside dielectrics (../shared/NOTES.md); a frame is never
+    written with NaN in it.
+    """
+    bad = ~np.all(np.isfinite(image), axis=-1)
+    count = int(bad.sum())
+    if count == 0:
+        return image, 0
+    from scipy.ndimage import uniform_filter  # noqa: PLC0415
+
+    good = (~bad).astype(np.float64)
+    clean = np.where(bad[..., None], 0.0, image)
+    weight = uniform_filter(good, size=3, mode="nearest")
+    sums = np.stack([uniform_filter(clean[..., c], size=3, mode="nearest") for c in range(image.shape[-1])], axis=-1)
+    fill = np.where(weight[..., None] > 0, sums / np.maximum(weight[..., None], 1e-12), 0.0)
+    return np.where(bad[..., None], fill, image), count
+
+
+def _water_mesh(faces: np.ndarray, positions: np.ndarray, normals: np.ndarray, bsdf: dict, medium: dict):
+    import mitsuba as mi  # noqa: PLC0415
+
+    props = mi.Properties()
+    props["bsdf"] = mi.load_dict(bsdf)
+    props["interior"] = mi.load_dict(medium)
+    mesh = mi.Mesh(WATER_ID, len(positions), len(faces), props, has_vertex_normals=True)
+    params = mi.traverse(mesh)
+    params["vertex_positions"] = mi.Float(np.ascontiguousarray(positions, dtype=np.float32).ravel())
+    params["vertex_normals"] = mi.Float(np.ascontiguousarray(normals, dtype=np.float32).ravel())
+    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
+    params.update()
+    return mesh
+
+
+@dataclass
+class WaterRenderer:
+    """A loaded Mitsuba scene: sun and sky, camera, closed water body.
+
+    Build it with :meth:`build`; then per frame :meth:`update_water` and
+    :meth:`render_xyz`.
+    """
+
+    scene: object
+    params: object
+    resolution: tuple[int, int]
+
+    @classmethod
+    def build(cls, settings: Scene, iops: WaterIOPs, faces: np.ndarray, positions: np.ndarray, normals: np.ndarray,
+              roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None) -> "WaterRenderer":
+        """Load the scene once (vertex count and faces are then fixed).
+
+        ``roughness`` is the Beckmann α of the water surface [-].
+        """
+        import mitsuba as mi  # noqa: PLC0415
+
+        width, height = resolution or settings.output.resolution
+        mesh = _water_mesh(faces, positions, normals, water_surface_bsdf(settings.water.ior, roughness), water_medium(iops))
+        scene = mi.load_dict({
+            "type": "scene",
+            "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth),
+            "sensor": perspective_sensor(settings.camera, xyz_film(width, height), spp or settings.output.spp),
+            "sky": sunsky_emitter(settings.sun),
+            WATER_ID: mesh,
+        })
+        return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height))
+
+    def update_water(self, positions: np.ndarray, normals: np.ndarray) -> None:
+        """Replace the water mesh's vertex positions [m] and unit normals in place."""
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.params[f"{WATER_ID}.vertex_positions"] = mi.Float(np.ascontiguousarray(positions, dtype=np.float32).ravel())
+        self.params[f"{WATER_ID}.vertex_normals"] = mi.Float(np.ascontiguousarray(normals, dtype=np.float32).ravel())
+        self.params.update()
+
+    def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
+        """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count)."""
+        import mitsuba as mi  # noqa: PLC0415
+
+        film = np.array(mi.render(self.scene, seed=int(seed), spp=int(spp)))
+        return repair_non_finite(film_to_absolute_XYZ(film))
+
+
+def adapting_white_XYZ(settings: Scene, spp: int | None = None, seed: int = 0) -> np.ndarray:
+    """XYZ [cd m⁻²] of a white Lambertian surface lit by the scene's sun and sky.
+
+    The radiance of a perfectly white Lambertian plane is L = E/π, with E the
+    horizontal spectral irradiance of sun + sky (Lambert's cosine law), so this
+    is the adapting white of the vision model in the same spectra and units
+    as the frames. It is measured with a ``radiancemeter`` looking straight
+    down at a large white ``diffuse`` disk under the same ``sunsky`` emitter,
+    with next-event estimation (``path``, one bounce).
+    """
+    import mitsuba as mi  # noqa: PLC0415
+
+    scene = mi.load_dict({
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": 2},
+        "sensor": {
+            "type": "radiancemeter",
+            "origin": [0.0, 0.0, 1.0],
+            "direction": [0.0, 0.0, -1.0],
+            "film": {**xyz_film(1, 1), "rfilter": {"type": "box"}},
+            "sampler": {"type": "independent", "sample_count": int(spp or settings.render.white_spp)},
+        },
+        "sky": sunsky_emitter(settings.sun),
+        "ground": {
+            "type": "disk",
+            "to_world": mi.ScalarTransform4f().scale([1.0e4, 1.0e4, 1.0]),
+            "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}},
+        },
+    })
+    film = np.array(mi.render(scene, seed=int(seed)))
+    return film_to_absolute_XYZ(film).reshape(3)

@@ -1,0 +1,167 @@
+"""Small functions that return Mitsuba 3 scene-description dicts.
+
+The scene is assembled in memory from these pieces (no XML). World frame:
+z up, +x east, +y north; scene units are metres, so Mitsuba's "inverse scene
+units" for medium coefficients are m⁻¹. Spectra are in nm.
+
+Call these only after a variant is set (:func:`oceanrender.runtime.activate_variant`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import colour
+import numpy as np
+
+from ..config import CameraSettings, SunSettings
+from ..optics.water import WaterIOPs
+
+#: Name of the CIE 1931 2° observer in colour-science.
+CIE1931 = "CIE 1931 2 Degree Standard Observer"
+
+#: Wavelength range of the rendered spectrum and of the film [nm].
+FILM_RANGE_NM = (360.0, 830.0)
+
+
+def sun_direction(elevation_deg: float, azimuth_deg: float) -> np.ndarray:
+    """Unit vector towards the sun, world frame (z up, +y north, +x east).
+
+    Parameters
+    ----------
+    elevation_deg : float   Elevation above the horizon [deg].
+    azimuth_deg : float     Azimuth clockwise from north [deg].
+    """
+    el, az = math.radians(elevation_deg), math.radians(azimuth_deg)
+    return np.array([math.sin(az) * math.cos(el), math.cos(az) * math.cos(el), math.sin(el)])
+
+
+def cmf_response_spectra(wavelength_range: tuple[float, float] = FILM_RANGE_NM) -> dict[str, list[tuple[float, float]]]:
+    """The CIE 1931 2° colour-matching functions x̄, ȳ, z̄ as (λ [nm], value) lists."""
+    cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(*wavelength_range, 1))
+    wavelengths = cmfs.wavelengths
+    return {
+        name: list(zip(wavelengths.tolist(), cmfs.values[:, i].tolist()))
+        for i, name in enumerate(("X", "Y", "Z"))
+    }
+
+
+def xyz_film(width: int, height: int) -> dict:
+    """``specfilm`` whose three channels are ∫L x̄ dλ, ∫L ȳ dλ, ∫L z̄ dλ.
+
+    With radiance L in W m⁻² sr⁻¹ nm⁻¹ each channel is in W m⁻² sr⁻¹ (CIE-
+    weighted); multiply by K_m = 683 lm W⁻¹ for cd m⁻². Channel names sort as
+    X, Y, Z, which is the order Mitsuba stores them in. float32 storage: the
+    default float16 overflows on the sun.
+    """
+    film = {
+        "type": "specfilm",
+        "width": int(width),
+        "height": int(height),
+        "component_format": "float32",
+        "rfilter": {"type": "box"},
+    }
+    for name, values in cmf_response_spectra().items():
+        film[name] = {"type": "spectrum", "value": values}
+    return film
+
+
+def look_at_transform(position, target):
+    """Camera-to-world transform looking from ``position`` at ``target`` (z up)."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    forward = np.subtract(target, position, dtype=float)
+    forward /= np.linalg.norm(forward)
+    up = [0.0, 0.0, 1.0] if abs(forward[2]) < 0.999 else [0.0, 1.0, 0.0]
+    return mi.ScalarTransform4f().look_at(origin=list(map(float, position)), target=list(map(float, target)), up=up)
+
+
+def perspective_sensor(camera: CameraSettings, film: dict, spp: int) -> dict:
+    """Pinhole ``perspective`` sensor; ``camera.fov`` is the horizontal field of view [deg]."""
+    return {
+        "type": "perspective",
+        "fov": float(camera.fov),
+        "fov_axis": "x",
+        "near_clip": 0.01,
+        "far_clip": 1.0e5,
+        "to_world": look_at_transform(camera.position, camera.target),
+        "film": film,
+        "sampler": {"type": "independent", "sample_count": int(spp)},
+    }
+
+
+def sunsky_emitter(sun: SunSettings) -> dict:
+    """Mitsuba's ``sunsky`` (Hosek & Wilkie 2012 sky, 2013 sun), radiance in W m⁻² sr⁻¹ nm⁻¹.
+
+    Its emitter frame is z up, like the world frame here, so no ``to_world``.
+    NOTE: its spectral data end at 720 nm; radiance is zero above.
+    """
+    return {
+        "type": "sunsky",
+        "sun_direction": sun_direction(sun.elevation, sun.azimuth).tolist(),
+        "turbidity": float(sun.turbidity),
+        "albedo": float(sun.ground_albedo),
+        "sun_scale": float(sun.sun_scale),
+        "sky_scale": float(sun.sky_scale),
+    }
+
+
+def irregular_spectrum(wavelengths: np.ndarray, values: np.ndarray) -> dict:
+    """An ``irregular`` Mitsuba spectrum from arrays (λ in nm)."""
+    return {
+        "type": "irregular",
+        "wavelengths": ", ".join(f"{w:.6g}" for w in wavelengths),
+        "values": ", ".join(f"{v:.8g}" for v in values),
+    }
+
+
+def water_medium(iops: WaterIOPs) -> dict:
+    """Homogeneous medium from the water's IOPs (σ_t = a + b [m⁻¹], albedo b/c).
+
+    The phase function is Mitsuba's ``rayleigh`` (3/16π)(1 + cos²θ): the
+    shape of molecular scattering; pure water's own VSF has 0.835 cos²θ
+    (Morel 1974) because of depolarisation — within 5 % of this in the
+    forward/backward directions.
+    """
+    lo, hi = FILM_RANGE_NM
+    if iops.wavelengths[0] > lo or iops.wavelengths[-1] < hi:
+        raise ValueError(
+            f"water IOPs cover {iops.wavelengths[0]:g}-{iops.wavelengths[-1]:g} nm; "
+            f"the medium must be defined over {lo:g}-{hi:g} nm"
+        )
+    return {
+        "type": "homogeneous",
+        "sigma_t": irregular_spectrum(iops.wavelengths, iops.attenuation),
+        "albedo": irregular_spectrum(iops.wavelengths, iops.single_scattering_albedo),
+        "phase": {"type": "rayleigh"},
+        "scale": 1.0,
+    }
+
+
+#: Below this Beckmann α the surface is treated as perfectly smooth [-].
+SMOOTH_ALPHA = 1e-3
+
+
+def water_surface_bsdf(ior: float, alpha: float) -> dict:
+    """Air–water interface: smooth ``dielectric`` or ``roughdielectric`` (Beckmann α).
+
+    Parameters
+    ----------
+    ior : float     Refractive index of water relative to air [-].
+    alpha : float   Beckmann roughness of the unresolved slopes [-].
+
+    Notes
+    -----
+    A rough interface also lets Mitsuba's next-event estimation reach the sun
+    from under water (a delta interface blocks it), which is what makes the
+    sun's light scattered inside the water converge at low spp.
+    """
+    if alpha < SMOOTH_ALPHA:
+        return {"type": "dielectric", "int_ior": float(ior), "ext_ior": 1.0}
+    return {"type": "roughdielectric", "distribution": "beckmann", "alpha": float(alpha),
+            "int_ior": float(ior), "ext_ior": 1.0}
+
+
+def volumetric_integrator(kind: str, max_depth: int) -> dict:
+    """``volpath`` or ``volpathmis`` with Russian roulette after 5 bounces."""
+    return {"type": kind, "max_depth": int(max_depth), "rr_depth": 5}

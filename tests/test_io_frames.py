@@ -1,0 +1,46 @@
+"""Frame files: atomic writes, round trips and the resume check."""
+
+import numpy as np
+import pytest
+
+from oceanrender.io.frames import FRAME_CHANNELS, atomic_path, frame_is_complete, read_exr, write_exr, write_png
+
+
+def frame_channels(rng, width=6, height=4):
+    return {name: rng.random((height, width)).astype(np.float32) for name in FRAME_CHANNELS}
+
+
+def test_exr_round_trip_with_metadata(tmp_path, rng):
+    channels = frame_channels(rng)
+    path = tmp_path / "f.exr"
+    write_exr(path, channels, {"scene": "s", "frame": 7, "time_s": 0.25, "flag": True})
+    back, meta = read_exr(path)
+    for name in FRAME_CHANNELS:
+        np.testing.assert_array_equal(back[name], channels[name])
+    assert meta == {"scene": "s", "frame": 7, "time_s": 0.25, "flag": "true"}
+
+
+def test_atomic_write_leaves_nothing_on_failure(tmp_path):
+    target = tmp_path / "out.exr"
+    with pytest.raises(RuntimeError):
+        with atomic_path(target, ".exr") as tmp:
+            tmp.write_bytes(b"partial")
+            raise RuntimeError("killed mid-write")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_frame_complete_only_when_both_files_read_back(tmp_path, rng):
+    exr, png = tmp_path / "frame_0000.exr", tmp_path / "frame_0000.png"
+    assert not frame_is_complete(exr, png, (6, 4))
+    write_exr(exr, frame_channels(rng))
+    assert not frame_is_complete(exr, png, (6, 4))
+    write_png(png, (rng.random((4, 6, 3)) * 255).astype(np.uint8))
+    assert frame_is_complete(exr, png, (6, 4))
+    assert not frame_is_complete(exr, png, (8, 4)), "wrong size must not count as done"
+    exr.write_bytes(exr.read_bytes()[:40])  # a truncated file, as after a crash
+    assert not frame_is_complete(exr, png, (6, 4))
+
+
+def test_png_must_be_8_bit(tmp_path):
+    with pytest.raises(TypeError, match="uint8"):
+        write_png(tmp_path / "x.png", np.zeros((2, 2, 3), dtype=np.float32))
