@@ -181,6 +181,14 @@ class Sequence:
         return repaired
 
 
+def remove_stale_temporaries(out_dir: str | Path) -> list[Path]:
+    """Delete temporary frame files a killed run left behind (``.frame_*.tmp*``)."""
+    stale = sorted(Path(out_dir).glob(".frame_*.tmp*")) if Path(out_dir).is_dir() else []
+    for path in stale:
+        path.unlink(missing_ok=True)
+    return stale
+
+
 def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tuple[int, int] | None = None,
                     spp: int | None = None, resolution: tuple[int, int] | None = None,
                     on_frame: Callable[[int, float, bool], None] | None = None) -> SequenceReport:
@@ -193,6 +201,7 @@ def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tup
     start, end = frames or scene.output.frames
     size = tuple(resolution or scene.output.resolution)
     report = SequenceReport(variant=variant)
+    remove_stale_temporaries(out_dir)
     todo = []
     for frame in range(start, end):
         paths = frame_paths(out_dir, frame)

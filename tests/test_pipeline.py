@@ -1,0 +1,138 @@
+"""The sequence runner: per-frame updates, resume, and the CLI end to end."""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from oceanrender.cli import main
+from oceanrender.config import scene_from_dict
+from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
+from oceanrender.pipeline import Sequence, frame_paths, render_sequence
+from oceanrender.render.renderer import WaterRenderer
+
+pytestmark = pytest.mark.render
+
+ROOT = Path(__file__).resolve().parents[1]
+
+TINY = {
+    "output": {"resolution": [24, 16], "spp": 4, "frames": [0, 2]},
+    "ocean": {"resolution": 16, "patch_size": 40.0},
+    "render": {"white_spp": 64, "max_depth": 6},
+}
+
+
+def tiny_scene(**sections):
+    data = {"name": "tiny", **{k: dict(v) for k, v in TINY.items()}}
+    for key, values in sections.items():
+        data[key] = {**data.get(key, {}), **values}
+    return scene_from_dict(data)
+
+
+def tiny_toml(tmp_path, frames=(0, 2), resolution=(24, 16), spp=4):
+    path = tmp_path / "tiny.toml"
+    path.write_text(
+        f"[output]\nframes = [{frames[0]}, {frames[1]}]\nresolution = [{resolution[0]}, {resolution[1]}]\nspp = {spp}\n"
+        f"directory = '{tmp_path / 'out'}'\n"
+        "[ocean]\nresolution = 16\npatch_size = 40.0\n[render]\nwhite_spp = 64\nmax_depth = 6\n"
+    )
+    return path
+
+
+def test_per_frame_update_renders_like_a_fresh_load(variant):
+    scene = tiny_scene()
+    sequence = Sequence(scene, variant)  # loaded with frame 0's geometry
+    positions, normals = sequence.geometry(7)  # a later frame: every vertex moves
+    first, _ = sequence.geometry(0)
+    assert np.abs(positions - first).max() > 0.01
+    sequence.renderer.update_water(positions, normals)
+    updated, _ = sequence.renderer.render_xyz(spp=4, seed=11)
+    fresh = WaterRenderer.build(scene, sequence.iops, sequence.faces, positions, normals,
+                                roughness=sequence.roughness, spp=4)
+    reloaded, _ = fresh.render_xyz(spp=4, seed=11)
+    np.testing.assert_allclose(updated, reloaded, rtol=1e-4, atol=1e-3)
+    # ...and it is not trivially equal to the frame-0 image.
+    sequence.renderer.update_water(*sequence.geometry(0))
+    other, _ = sequence.renderer.render_xyz(spp=4, seed=11)
+    assert np.abs(other - updated).max() > 1.0
+
+
+def test_sequence_writes_frames_with_metadata_and_resumes(variant, tmp_path):
+    scene = tiny_scene()
+    report = render_sequence(scene, tmp_path, variant)
+    assert report.rendered == [0, 1] and report.skipped == []
+    for frame in (0, 1):
+        paths = frame_paths(tmp_path, frame)
+        assert frame_is_complete(paths.exr, paths.png, (24, 16))
+        channels, meta = read_exr(paths.exr)
+        assert set(FRAME_CHANNELS) <= set(channels)
+        assert meta["frame"] == frame and meta["scene"] == "tiny" and meta["variant"] == variant
+        assert meta["time_s"] == pytest.approx(frame / 24.0)
+        assert all(np.isfinite(channels[c]).all() for c in FRAME_CHANNELS)
+        assert channels["Y"].mean() > 0
+    stamp = frame_paths(tmp_path, 0).exr.stat().st_mtime_ns
+    frame_paths(tmp_path, 1).png.write_bytes(b"\x89PNG broken")  # damaged frame: must be redone
+    again = render_sequence(scene, tmp_path, variant)
+    assert again.skipped == [0] and again.rendered == [1]
+    assert frame_paths(tmp_path, 0).exr.stat().st_mtime_ns == stamp
+
+
+def test_cli_tiny_render_end_to_end(tmp_path, capsys):
+    scene = tiny_toml(tmp_path)
+    assert main(["render", str(scene), "--no-progress"]) == 0
+    out = capsys.readouterr().out
+    assert "rendered 2 frame(s)" in out and "variant" in out
+    assert sorted(p.name for p in (tmp_path / "out" / "tiny").iterdir()) == [
+        "frame_0000.exr", "frame_0000.png", "frame_0001.exr", "frame_0001.png"]
+    # Overrides from the command line: one more frame at another size goes to another folder.
+    assert main(["render", str(scene), "--frames", "2:3", "--resolution", "12x8", "--spp", "2",
+                 "--out", str(tmp_path / "o2"), "--no-progress"]) == 0
+    assert frame_is_complete(tmp_path / "o2/tiny/frame_0002.exr", tmp_path / "o2/tiny/frame_0002.png", (12, 8))
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["render", "no/such.toml"], "no/such.toml: cannot read scene file"),
+        (["render", "{scene}", "--spp", "0"], "command line: [output] spp"),
+        (["render", "{scene}", "--frames", "3:1"], "command line: [output] frames"),
+        (["render", "{scene}", "--variant", "llvm_ad_rgb"], "[render] variant"),
+        (["render", "{bad}"], "[ocean] wind_speed"),
+    ],
+)
+def test_cli_user_errors_are_one_line_exit_2(tmp_path, capsys, args, message):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[ocean]\nwind_speed = -2\n")
+    argv = [a.format(scene=tiny_toml(tmp_path), bad=bad) for a in args]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert message in err and "\n" not in err and "Traceback" not in err
+
+
+def test_killed_run_resumes_without_losing_frames(tmp_path):
+    scene = tiny_toml(tmp_path, frames=(0, 6), resolution=(64, 36), spp=16)
+    out = tmp_path / "out" / "tiny"
+    command = [sys.executable, "-m", "oceanrender", "render", str(scene), "--no-progress"]
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, cwd=ROOT)
+    deadline = time.monotonic() + 240
+    while not (out / "frame_0001.png").exists():
+        assert proc.poll() is None, proc.stdout.read().decode()
+        assert time.monotonic() < deadline, "no frame appeared"
+        time.sleep(0.02)
+    proc.send_signal(signal.SIGKILL)  # no clean-up handler can run
+    proc.wait()
+    done = [f for f in range(6) if frame_is_complete(out / f"frame_{f:04d}.exr", out / f"frame_{f:04d}.png", (64, 36))]
+    assert 2 <= len(done) < 6, f"the kill should land mid-sequence, had {done}"
+    stamps = {f: (out / f"frame_{f:04d}.exr").stat().st_mtime_ns for f in done}
+    result = subprocess.run(command, capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert f"skipped {len(done)} already complete" in result.stdout
+    for f in range(6):
+        assert frame_is_complete(out / f"frame_{f:04d}.exr", out / f"frame_{f:04d}.png", (64, 36))
+    assert all((out / f"frame_{f:04d}.exr").stat().st_mtime_ns == stamps[f] for f in done)
+    assert not list(out.glob(".frame_*")), "temporary files must not survive"
