@@ -91,7 +91,7 @@ def frame_is_complete(exr_path: str | Path, png_path: str | Path, size: tuple[in
         return False
     try:
         channels, _ = read_exr(exr_path)
-        image = iio.imread(png_path, extension=".png")
+        image = iio.imread(png_path, plugin="pillow")
     except Exception:  # noqa: BLE001 (any unreadable file means: render again)
         return False
     if any(name not in channels for name in FRAME_CHANNELS):
