@@ -7,7 +7,6 @@ Mitsuba variant must already be active (the CLI activates it).
 
 from __future__ import annotations
 
-import math
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -17,8 +16,7 @@ import numpy as np
 
 from . import __version__
 from .config import Scene
-from .geometry.fft_ocean import FFTOcean, OceanGrid
-from .geometry.mesh import water_body_faces, water_body_vertices
+from .geometry.body import FrameGeometry, WaterBody
 from .geometry.roughness import beckmann_alpha, unresolved_slope_variance
 from .io.frames import frame_is_complete, write_exr, write_png
 from .optics.water import pure_seawater_iops
@@ -45,32 +43,12 @@ def frame_paths(out_dir: str | Path, frame: int) -> FramePaths:
     return FramePaths(exr=out_dir / f"frame_{frame:04d}.exr", png=out_dir / f"frame_{frame:04d}.png")
 
 
-def ocean_for_scene(scene: Scene) -> FFTOcean:
-    """The FFT ocean of a scene (SI units; wind direction converted to rad)."""
-    ocean = scene.ocean
-    return FFTOcean(
-        grid=OceanGrid(resolution=ocean.resolution, patch_size=ocean.patch_size),
-        wind_speed=ocean.wind_speed,
-        wind_direction=math.radians(ocean.wind_direction),
-        alpha=ocean.phillips_alpha,
-        small_wave_length=ocean.small_wave_length,
-        seed=ocean.seed,
-        choppiness=ocean.choppiness,
-        depth=scene.water.depth,
-    )
-
-
-def surface_roughness(scene: Scene) -> float:
-    """Beckmann α of the water surface [-]: the scene's, or the unresolved waves' slopes."""
+def surface_roughness(scene: Scene, body: WaterBody) -> float:
+    """Beckmann α of the water surface [-]: the scene's, or the slopes of the waves finer than the geometry."""
     if scene.water.surface_roughness != "auto":
         return float(scene.water.surface_roughness)
-    ocean = scene.ocean
-    variance = unresolved_slope_variance(
-        ocean.spectrum, ocean.resolution, ocean.patch_size, wind_speed=ocean.wind_speed,
-        wind_direction=math.radians(ocean.wind_direction), alpha=ocean.phillips_alpha,
-        small_wave_length=ocean.small_wave_length,
-    )
-    return beckmann_alpha(variance)
+    cutoff = np.pi / body.sea.finest_cell
+    return beckmann_alpha(unresolved_slope_variance(body.sea.spectrum, cutoff))
 
 
 def vision_for_scene(scene: Scene) -> VisionModel:
@@ -114,12 +92,12 @@ class Sequence:
         self.variant = variant
         self.spp = int(spp or scene.output.spp)
         self.resolution = tuple(resolution or scene.output.resolution)
-        self.ocean = ocean_for_scene(scene)
-        self.faces = water_body_faces(scene.ocean.resolution)
+        self.body = WaterBody(scene)
+        self.faces = self.body.faces
         self.iops = pure_seawater_iops(scene.water.iop_table)
-        positions, normals = self.geometry(scene.output.frames[0])
-        self.roughness = surface_roughness(scene)
-        self.renderer = WaterRenderer.build(scene, self.iops, self.faces, positions, normals, roughness=self.roughness,
+        first = self.geometry(scene.output.frames[0])
+        self.roughness = surface_roughness(scene, self.body)
+        self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
                                             spp=self.spp, resolution=self.resolution)
         self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
         self.vision = vision_for_scene(scene)
@@ -128,10 +106,9 @@ class Sequence:
         """Frame time t = frame / fps [s]."""
         return frame / self.scene.output.fps
 
-    def geometry(self, frame: int) -> tuple[np.ndarray, np.ndarray]:
-        """Water-body vertex positions [m] and normals for a frame."""
-        fields = self.ocean.fields(self.time_of(frame))
-        return water_body_vertices(fields, self.scene.ocean.patch_size, self.scene.water.depth)
+    def geometry(self, frame: int) -> FrameGeometry:
+        """The water body of a frame: vertex positions [m], normals, foam."""
+        return self.body.frame(self.time_of(frame))
 
     def metadata(self, frame: int, repaired: int, adaptation: float) -> dict[str, object]:
         import mitsuba  # noqa: PLC0415
@@ -159,10 +136,10 @@ class Sequence:
     def render_frame(self, frame: int, paths: FramePaths, seconds: dict[str, float]) -> int:
         """Render, adapt and write one frame; returns the count of repaired pixels."""
         tic = time.perf_counter()
-        positions, normals = self.geometry(frame)
+        geometry = self.geometry(frame)
         tac = time.perf_counter()
         seconds["geometry"] += tac - tic
-        self.renderer.update_water(positions, normals)
+        self.renderer.update_water(geometry)
         tic = time.perf_counter()
         seconds["update"] += tic - tac
         xyz, repaired = self.renderer.render_xyz(self.spp, seed=self.scene.render.seed + frame)

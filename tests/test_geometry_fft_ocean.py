@@ -1,18 +1,27 @@
-"""Tests for oceanrender.geometry.fft_ocean: normalisation, reality, derivatives, motion."""
+"""Tests for oceanrender.geometry.fft_ocean (and .noise): normalisation, reality, derivatives, motion,
+seed stability, looping, engines."""
+
+import importlib.util
+from functools import partial
 
 import numpy as np
 import pytest
 import scipy.fft
+import scipy.stats
 
 from oceanrender.geometry.fft_ocean import (
+    ENGINES,
+    FFT_BACKENDS,
     FFTOcean,
     OceanGrid,
     elevation_variance,
     initial_amplitudes,
     negate_wavenumber,
     ocean_fields,
+    quantised_frequency,
     time_amplitudes,
 )
+from oceanrender.geometry.noise import mode_gaussian, splitmix64
 from oceanrender.geometry.spectra import (
     dispersion_relation,
     elevation_variance_Phillips2001,
@@ -27,7 +36,8 @@ EXACT_RTOL = 1e-10
 def smooth_ocean(resolution=64, choppiness=0.0, seed=1, t=1.7):
     """A well-resolved sea: ℓ = 3 m suppresses waves shorter than the grid resolves."""
     return FFTOcean(
-        OceanGrid(resolution, 100.0), 5.0, 0.3, seed=seed, choppiness=choppiness, small_wave_length=3.0
+        OceanGrid(resolution, 100.0), 5.0, 0.3, seed=seed, choppiness=choppiness, small_wave_length=3.0,
+        dtype=np.float64,
     ), t
 
 
@@ -142,7 +152,7 @@ def test_slopes_match_finite_differences():
 @pytest.mark.parametrize("choppiness", [0.0, 1.3])
 def test_fields_match_direct_fourier_sums(choppiness):
     grid = OceanGrid(16, 30.0)  # Nyquist-free check of packing, origin shift and signs
-    ocean = FFTOcean(grid, 6.0, -2.0, seed=5, choppiness=choppiness)
+    ocean = FFTOcean(grid, 6.0, -2.0, seed=5, choppiness=choppiness, dtype=np.float64)
     t = 2.3
     fields = ocean.fields(t)
     h = time_amplitudes(ocean.h0, ocean.omega, t)
@@ -166,7 +176,7 @@ def test_fields_match_direct_fourier_sums(choppiness):
 def test_choppy_normals_are_unit_up_and_orthogonal_to_the_displaced_surface():
     # steeper than smooth_ocean (slopes ~0.04 rms) yet resolved: ℓ = 0.3 m on a 0.08 m grid
     grid, t = OceanGrid(256, 20.0), 1.0
-    ocean = FFTOcean(grid, 3.0, 0.3, seed=1, choppiness=1.0, small_wave_length=0.3)
+    ocean = FFTOcean(grid, 3.0, 0.3, seed=1, choppiness=1.0, small_wave_length=0.3, dtype=np.float64)
     fields = ocean.fields(t)
     n = fields.normals
     np.testing.assert_allclose(np.linalg.norm(n, axis=-1), 1.0, rtol=1e-14)
@@ -207,8 +217,8 @@ def test_single_mode_travels_at_the_phase_speed():
     t = 3 * grid.spacing / speed  # three cells
     eta0 = ocean_fields(grid, h0, omega, 0.0, 0.0).height
     eta = ocean_fields(grid, h0, omega, t, 0.0).height
-    # Tessendorf's e^{+iωt}: the h̃₀(k) wave runs along −k, here towards −x
-    np.testing.assert_allclose(eta, np.roll(eta0, -3, axis=1), atol=1e-12)
+    # e^{−iωt} (Tessendorf's eq. 26 has e^{+iωt}): the variance at k runs along +k, here towards +x
+    np.testing.assert_allclose(eta, np.roll(eta0, 3, axis=1), atol=1e-12)
     assert np.abs(eta - eta0).max() > 0.1
 
 
@@ -225,7 +235,7 @@ def test_ocean_validates_parameters():
 
 def test_single_precision_agrees_with_double():
     grid = OceanGrid(128, 200.0)
-    double = FFTOcean(grid, 8.0, 0.2, seed=2, choppiness=0.9)
+    double = FFTOcean(grid, 8.0, 0.2, seed=2, choppiness=0.9, dtype=np.float64)
     single = FFTOcean(grid, 8.0, 0.2, seed=2, choppiness=0.9, dtype=np.float32)
     t = 5000.0  # large ωt: the phase is reduced to one cycle in float64 first
     a, b = double.fields(t), single.fields(t)
@@ -236,3 +246,155 @@ def test_single_precision_agrees_with_double():
         assert np.abs(x - y).max() < 1e-5 * np.abs(x).max(), name
     with pytest.raises(ValueError):
         FFTOcean(grid, 8.0, 0.2, dtype=np.int32)
+
+
+# --- seed-stable noise, loop period, spectrum callables, engines and backends -------------------------
+
+
+def test_splitmix64_reference_values_and_noise_statistics():
+    # SplitMix64 seeded with 0 (state advanced by the golden gamma first): published first outputs
+    assert int(splitmix64(np.uint64(0))) == 0xE220A8397B1DCDAF
+    assert int(splitmix64(np.uint64(0x9E3779B97F4A7C15))) == 0x6E789E6AA1B965F4
+    n = np.arange(-200, 200)
+    xi = mode_gaussian(7, 0, n[None, :], n[:, None])
+    parts = np.concatenate([xi.real.ravel(), xi.imag.ravel()])  # 320 000 draws
+    assert abs(parts.mean()) < 5 / np.sqrt(parts.size)
+    assert abs(parts.var() - 1) < 5 * np.sqrt(2 / parts.size)
+    assert abs(np.corrcoef(xi.real.ravel(), xi.imag.ravel())[0, 1]) < 5 / np.sqrt(xi.size)
+    assert abs(np.corrcoef(xi.real[:, 1:].ravel(), xi.real[:, :-1].ravel())[0, 1]) < 5 / np.sqrt(xi.size)
+    assert scipy.stats.kstest(parts, "norm").pvalue > 1e-3
+    # a pure function of (seed, cascade, nx, ny): order and shape of the request do not matter
+    assert mode_gaussian(7, 0, 3, -5) == xi[200 - 5, 200 + 3]
+    assert mode_gaussian(7, 1, 3, -5) != mode_gaussian(7, 0, 3, -5)
+    assert mode_gaussian(8, 0, 3, -5) != mode_gaussian(7, 0, 3, -5)
+
+
+def test_refining_the_grid_keeps_the_large_waves():
+    L, t = 200.0, 3.3
+    coarse, fine = OceanGrid(128, L), OceanGrid(256, L)
+    spectrum = partial(spectrum_Phillips2001, wind_speed=9.0, wind_direction=0.4)
+    h_coarse = initial_amplitudes(coarse, spectrum(coarse.kx, coarse.ky), seed=5)
+    h_fine = initial_amplitudes(fine, spectrum(fine.kx, fine.ky), seed=5)
+    # the modes common to both grids (|n| < 64, the coarse grid's Nyquist excluded) are identical
+    common = (np.abs(fine.indices[None, :]) < 64) & (np.abs(fine.indices[:, None]) < 64)
+    rows, coarse_rows = np.abs(fine.indices) < 64, np.abs(coarse.indices) < 64  # same order: 0 … 63, −63 … −1
+    np.testing.assert_array_equal(h_fine[np.ix_(rows, rows)], h_coarse[np.ix_(coarse_rows, coarse_rows)])
+    # the low-pass of the fine sea is the coarse sea, at the coarse grid's points
+    omega = dispersion_relation(fine.k)
+    low_pass = ocean_fields(fine, h_fine * common, omega, t, 1.0)
+    reference = ocean_fields(coarse, h_coarse, dispersion_relation(coarse.k), t, 1.0)
+    for name in ("height", "displacement_x", "slope_y", "jacobian"):
+        np.testing.assert_allclose(getattr(low_pass, name)[::2, ::2], getattr(reference, name), rtol=0,
+                                   atol=1e-12 * np.abs(getattr(reference, name)).max())
+    # and the fine sea adds only short waves to it
+    full = ocean_fields(fine, h_fine, omega, t, 1.0).height[::2, ::2]
+    assert np.std(full - reference.height) < 0.2 * np.std(reference.height)
+
+
+def test_loop_period_repeats_the_sea_exactly():
+    T = 20.0
+    ocean = FFTOcean(OceanGrid(64, 150.0), 8.0, 0.7, seed=3, choppiness=1.2, loop_period=T, dtype=np.float64)
+    free = FFTOcean(OceanGrid(64, 150.0), 8.0, 0.7, seed=3, choppiness=1.2, dtype=np.float64)
+    omega_0 = 2 * np.pi / T
+    change = free.omega - ocean.omega
+    assert np.all((change >= 0) & (change < omega_0))
+    np.testing.assert_allclose(ocean.omega / omega_0, np.round(ocean.omega / omega_0), rtol=0, atol=1e-9)
+    for t in [0.0, 1.37, 55.5]:
+        a, b = ocean.fields(t), ocean.fields(t + T)
+        # without the reduction t mod T: the quantised phases alone make the sea repeat
+        c = ocean.synthesis(t + 3 * T)
+        for name in ("height", "displacement_x", "displacement_y", "slope_x", "jacobian", "normals"):
+            scale = np.abs(getattr(a, name)).max()
+            np.testing.assert_allclose(getattr(b, name), getattr(a, name), rtol=0, atol=1e-12 * scale)
+            np.testing.assert_allclose(getattr(c, name), getattr(ocean.synthesis(t), name), rtol=0,
+                                       atol=1e-11 * scale)
+    # the free sea does not repeat after T
+    assert np.abs(free.fields(1.37 + T).height - free.fields(1.37).height).max() > 1e-3
+    np.testing.assert_array_equal(quantised_frequency(free.omega, None), free.omega)
+    with pytest.raises(ValueError):
+        quantised_frequency(free.omega, 0.0)
+    with pytest.raises(ValueError):
+        FFTOcean(OceanGrid(8, 10.0), 5.0, 0.0, loop_period=-1.0)
+
+
+def test_spectrum_function_replaces_the_phillips_parameters():
+    grid = OceanGrid(32, 80.0)
+    named = FFTOcean(grid, 7.0, 1.0, seed=4, small_wave_length=0.5, dtype=np.float64)
+    spectrum = partial(spectrum_Phillips2001, wind_speed=7.0, wind_direction=1.0, small_wave_length=0.5)
+    called = FFTOcean(grid, seed=4, spectrum_function=spectrum, dtype=np.float64)
+    np.testing.assert_array_equal(called.spectrum_values, named.spectrum_values)
+    np.testing.assert_array_equal(called.fields(2.0).height, named.fields(2.0).height)
+    with pytest.raises(ValueError):
+        FFTOcean(grid, spectrum_function=3.0)
+
+
+@pytest.mark.parametrize("dtype, rtol", [(np.float64, 1e-12), (np.float32, 2e-6)])
+@pytest.mark.parametrize("resolution, choppiness", [(32, 1.1), (15, 0.7), (16, 0.0)])
+def test_engines_and_fft_libraries_agree(dtype, rtol, resolution, choppiness):
+    grid = OceanGrid(resolution, 60.0)
+    reference = FFTOcean(grid, 7.0, 0.2, seed=8, choppiness=choppiness, dtype=dtype, engine="numpy",
+                         fft_backend="scipy").fields(4.0)
+    variants = [dict(engine=e, fft_backend=b, workers=w) for e in ENGINES for b in FFT_BACKENDS for w in (1, 3)
+                if importlib.util.find_spec(b) is not None]
+    for variant in variants:
+        fields = FFTOcean(grid, 7.0, 0.2, seed=8, choppiness=choppiness, dtype=dtype, **variant).fields(4.0)
+        for name in ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "jacobian", "normals",
+                     "jacobian_xx", "jacobian_yy", "jacobian_xy"):
+            x, y = getattr(fields, name), getattr(reference, name)
+            assert x.dtype == dtype
+            np.testing.assert_allclose(x, y, rtol=0, atol=rtol * max(np.abs(y).max(), 1.0), err_msg=f"{variant} {name}")
+    with pytest.raises(ValueError, match="numpy"):
+        FFTOcean(grid, 7.0, 0.2, engine="nope")
+    with pytest.raises(ValueError, match="scipy"):
+        FFTOcean(grid, 7.0, 0.2, fft_backend="nope")
+
+
+def test_fields_can_be_computed_into_the_previous_frame():
+    ocean = FFTOcean(OceanGrid(32, 50.0), 6.0, 0.0, seed=1, choppiness=0.9, dtype=np.float64)
+    first = ocean.fields(1.0)
+    expected = ocean.fields(2.0)
+    again = ocean.fields(2.0, out=first)
+    assert np.shares_memory(again.height, first.height) and again.normals is first.normals
+    for name in ("height", "displacement_y", "jacobian", "normals"):
+        np.testing.assert_array_equal(getattr(again, name), getattr(expected, name))
+    single = FFTOcean(OceanGrid(32, 50.0), 6.0, 0.0, seed=1, choppiness=0.9)  # float32
+    with pytest.raises(ValueError):
+        single.fields(1.0, out=first)
+
+
+def test_frames_held_by_the_caller_are_never_overwritten():
+    ocean = FFTOcean(OceanGrid(32, 50.0), 6.0, 0.0, seed=1, choppiness=0.9)
+    first = ocean.fields(1.0)
+    saved = {name: getattr(first, name).copy() for name in ("height", "slope_x", "displacement_y", "jacobian",
+                                                            "normals", "jacobian_xx")}
+    second = ocean.fields(2.0)
+    for name, values in saved.items():
+        np.testing.assert_array_equal(getattr(first, name), values)
+        assert not np.shares_memory(getattr(second, name), getattr(first, name))
+    # a frame nobody holds any more is recycled; one array still held is not
+    height = second.height
+    storage = id(second.slope_x.base)
+    del first, second
+    third = ocean.fields(3.0)
+    assert id(third.slope_x.base) == storage
+    assert not np.shares_memory(third.height, height)
+
+
+def test_a_one_sided_spectrum_travels_down_wind():
+    # all variance around k₀ = (±0.5 rad/m, 0): the wave groups must run along k₀, at the
+    # deep-water group speed c/2 (the phase speed is checked with a single mode above)
+    grid = OceanGrid(128, 400.0)
+    speed = np.sqrt(9.81 / 0.5) / 2
+    dt = 20 * grid.spacing / speed  # twenty cells
+
+    def correlation_peak(k0):
+        spectrum = lambda kx, ky: np.exp(-((kx - k0) ** 2 + ky**2) / (2 * 0.05**2))  # noqa: E731
+        ocean = FFTOcean(grid, seed=2, choppiness=0.0, spectrum_function=spectrum, dtype=np.float64)
+        before, after = ocean.fields(0.0).height, ocean.fields(dt).height
+        shifts = np.arange(-40, 41)
+        correlation = [np.sum(after * np.roll(before, s, axis=1)) for s in shifts]
+        return shifts[np.argmax(correlation)]
+
+    # the envelope moves 20 cells; the correlation peaks on the carrier crest (4 cells apart) nearest to it
+    assert abs(correlation_peak(0.5) - 20) <= 2
+    assert abs(correlation_peak(-0.5) + 20) <= 2

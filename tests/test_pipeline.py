@@ -47,17 +47,16 @@ def tiny_toml(tmp_path, frames=(0, 2), resolution=(24, 16), spp=4):
 def test_per_frame_update_renders_like_a_fresh_load(variant):
     scene = tiny_scene()
     sequence = Sequence(scene, variant)  # loaded with frame 0's geometry
-    positions, normals = sequence.geometry(7)  # a later frame: every vertex moves
-    first, _ = sequence.geometry(0)
-    assert np.abs(positions - first).max() > 0.01
-    sequence.renderer.update_water(positions, normals)
+    later = sequence.geometry(7)  # a later frame: every vertex moves
+    first = sequence.geometry(0)
+    assert np.abs(later.positions - first.positions).max() > 0.01
+    sequence.renderer.update_water(later)
     updated, _ = sequence.renderer.render_xyz(spp=4, seed=11)
-    fresh = WaterRenderer.build(scene, sequence.iops, sequence.faces, positions, normals,
-                                roughness=sequence.roughness, spp=4)
+    fresh = WaterRenderer.build(scene, sequence.iops, sequence.faces, later, roughness=sequence.roughness, spp=4)
     reloaded, _ = fresh.render_xyz(spp=4, seed=11)
     np.testing.assert_allclose(updated, reloaded, rtol=1e-4, atol=1e-3)
     # ...and it is not trivially equal to the frame-0 image.
-    sequence.renderer.update_water(*sequence.geometry(0))
+    sequence.renderer.update_water(first)
     other, _ = sequence.renderer.render_xyz(spp=4, seed=11)
     assert np.abs(other - updated).max() > 1.0
 

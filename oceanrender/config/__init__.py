@@ -2,6 +2,8 @@
 
 from .scene import (
     CameraSettings,
+    FoamSettings,
+    MeshSettings,
     OceanSettings,
     OutputSettings,
     RenderSettings,
@@ -16,6 +18,6 @@ from .scene import (
 )
 
 __all__ = [
-    "CameraSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
+    "CameraSettings", "FoamSettings", "MeshSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
     "SunSettings", "VisionSettings", "WaterSettings", "load_scene", "scene_from_dict", "with_overrides",
 ]

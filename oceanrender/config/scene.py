@@ -67,17 +67,37 @@ class RenderSettings(_Section):
 
 
 class OceanSettings(_Section):
-    """Open-sea geometry: Tessendorf FFT ocean."""
+    """Open-sea geometry: the wave spectrum and how the surface is synthesised.
 
-    spectrum: Literal["Phillips 2001"] = "Phillips 2001"
-    wind_speed: float = Field(7.0, gt=0, le=60, description="wind speed [m s⁻¹]")
+    ``model = "FFT"`` is Tessendorf's FFT sea, as ``cascades`` patches of
+    incommensurate sizes (the largest is ``patch_size``); "sum of sines" and
+    "Gerstner" draw ``wave_count`` components from the same spectrum.
+    """
+
+    model: Literal["FFT", "sum of sines", "Gerstner"] = "FFT"
+    spectrum: Literal["Phillips 2001", "Pierson-Moskowitz 1964", "JONSWAP 1973", "TMA 1985"] = "JONSWAP 1973"
+    spreading: Literal["cos2", "Mitsuyasu 1975", "Hasselmann 1980", "Donelan-Banner 1985"] | None = Field(
+        None, description="directional spreading; none = the spectrum's own (Phillips) or Mitsuyasu 1975"
+    )
+    wind_speed: float = Field(7.0, gt=0, le=60, description="wind speed 10 m above the sea [m s⁻¹]")
     wind_direction: float = Field(30.0, ge=-360, le=360, description="direction the wind blows toward, counter-clockwise from +x (east) [deg]")
-    phillips_alpha: float = Field(8.1e-3, gt=0, le=0.1, description="Phillips constant α [-]")
-    small_wave_length: float = Field(0.02, ge=0, le=10, description="suppression length ℓ of small waves [m]")
-    patch_size: float = Field(128.0, gt=0, le=100_000, description="side of the periodic patch [m]")
-    resolution: int = Field(256, ge=8, le=8192, description="FFT grid points per side")
+    fetch: float = Field(1.0e5, gt=0, le=1.0e7, description="fetch of JONSWAP/TMA [m]")
+    gamma: float = Field(3.3, ge=1, le=10, description="JONSWAP peak enhancement γ [-]")
+    wave_depth: float = Field(float("inf"), gt=0, description="water depth of the dispersion relation and TMA [m]; inf = deep")
+    alpha: float | None = Field(None, gt=0, le=0.1, description="Phillips/PM constant α [-] (default 8.1e-3)")
+    small_wave_length: float = Field(0.0, ge=0, le=10, description="suppression length ℓ of small waves [m]")
+    swell_height: float = Field(0.0, ge=0, le=30, description="significant height of an added swell [m]")
+    swell_period: float = Field(10.0, gt=0, le=40, description="swell peak period [s]")
+    swell_direction: float = Field(0.0, ge=-360, le=360, description="swell direction of travel, counter-clockwise from +x [deg]")
+    swell_spreading_s: float = Field(25.0, ge=0, le=1000, description="cos-2s spreading exponent of the swell [-]")
+    patch_size: float = Field(128.0, gt=0, le=100_000, description="side of the largest periodic patch [m]")
+    cascades: int = Field(1, ge=1, le=6, description="number of FFT patches of decreasing size [-]")
+    resolution: int = Field(256, ge=8, le=8192, description="FFT grid points per side of each patch")
     choppiness: float = Field(0.8, ge=0, le=3, description="horizontal displacement scale λ [-]")
+    loop_period: float = Field(0.0, ge=0, description="period after which the sea repeats exactly [s]; 0 = never")
     seed: int = Field(1, ge=0, description="random seed of the wave amplitudes")
+    wave_count: int = Field(256, ge=1, le=4096, description="components of the sum-of-sines / Gerstner models")
+    gerstner_steepness: float = Field(0.8, ge=0, le=3, description="Gerstner steepness q [-]")
 
     @field_validator("resolution")
     @classmethod
@@ -85,6 +105,45 @@ class OceanSettings(_Section):
         if value % 2:
             raise ValueError(f"expected an even number of grid points, got {value}")
         return value
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "OceanSettings":
+        if self.spectrum == "Phillips 2001" and self.spreading is not None:
+            raise ValueError("spreading must be left out for 'Phillips 2001' (it has its own cos² spreading)")
+        if self.alpha is not None and self.spectrum in ("JONSWAP 1973", "TMA 1985"):
+            raise ValueError("alpha follows from the fetch for JONSWAP/TMA; leave it out")
+        return self
+
+
+class MeshSettings(_Section):
+    """The rendered water body.
+
+    ``kind = "patch"``: one FFT patch as a closed box (the whole patch).
+    ``kind = "radial"``: a camera-centred polar grid with square cells growing
+    with distance, out to ``outer_radius`` (the horizon), sampling every cascade.
+    """
+
+    kind: Literal["patch", "radial"] = "patch"
+    inner_radius: float = Field(0.5, gt=0, description="radius of the first ring around the camera's nadir [m]")
+    outer_radius: float = Field(8000.0, gt=0, le=1.0e6, description="radius of the last ring [m]")
+    segments: int = Field(384, ge=8, le=16384, description="vertices per ring [-]")
+
+    @model_validator(mode="after")
+    def _radii(self) -> "MeshSettings":
+        if self.outer_radius <= self.inner_radius:
+            raise ValueError("outer_radius must exceed inner_radius")
+        return self
+
+
+class FoamSettings(_Section):
+    """Foam from folding of the surface (Jacobian J < threshold), built up and decaying over time."""
+
+    enabled: bool = False
+    threshold: float = Field(0.3, ge=-1, le=1, description="foam forms where the Jacobian J is below this [-]")
+    decay_time: float = Field(2.0, gt=0, le=60, description="e-folding time of foam decay [s]")
+    gain: float = Field(1.0, gt=0, le=100, description="production rate per unit of J below the threshold [s⁻¹]")
+    history: float = Field(3.0, gt=0, le=10, description="history simulated before each frame, in decay times [-]")
+    albedo: float = Field(0.8, ge=0, le=1, description="reflectance of fully foamed water [-]")
 
 
 class WaterSettings(_Section):
@@ -155,6 +214,8 @@ class Scene(_Section):
     output: OutputSettings = OutputSettings()
     render: RenderSettings = RenderSettings()
     ocean: OceanSettings = OceanSettings()
+    mesh: MeshSettings = MeshSettings()
+    foam: FoamSettings = FoamSettings()
     water: WaterSettings = WaterSettings()
     sun: SunSettings = SunSettings()
     camera: CameraSettings = CameraSettings()

@@ -11,8 +11,25 @@ column = x = east), as ``np.meshgrid(x, y, indexing="xy")``; spectral arrays
 use numpy's FFT ordering along both axes.
 
 The pieces are pure functions (:func:`initial_amplitudes`,
-:func:`time_amplitudes`, :func:`ocean_fields`); :class:`FFTOcean` only ties
-them to a set of parameters and caches what does not depend on time.
+:func:`time_amplitudes`, :func:`quantised_frequency`, :func:`ocean_fields`);
+:class:`OceanSynthesis` holds what a frame needs that does not depend on time,
+and :class:`FFTOcean` ties them to a set of parameters.
+
+Four departures from [1]:
+
+* **Direction of travel.** h̃(k, t) = h̃₀(k) e^{−iωt} + conj h̃₀(−k) e^{iωt}
+  (eq. 26 with the sign of ωt flipped), so the variance Ψ(k) travels along +k
+  and a one-sided (down-wind) spreading function makes waves run down-wind.
+
+* **Seed-stable amplitudes.** The Gaussian noise of mode (nx, ny) is a hash of
+  (seed, cascade, nx, ny) (:mod:`oceanrender.geometry.noise`), so a finer grid
+  of the same patch keeps exactly the same large waves.
+* **Loop period.** With ω̄ = ⌊ω/ω₀⌋ ω₀, ω₀ = 2π/T, the sea repeats exactly
+  after T seconds (:func:`quantised_frequency`).
+* **Speed.** A frame is four packed complex inverse FFTs (:func:`inverse_fft2`;
+  ducc0 when installed, else scipy) between two compiled passes over the grid
+  (numba when installed, else numpy), on several threads, in single precision
+  by default; the transforms take about three quarters of the time.
 
 Equation numbers refer to the 2001 course notes [1].
 
@@ -24,13 +41,20 @@ References
 
 from __future__ import annotations
 
+import importlib.util
+import math
+import os
+import sys
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cache, cached_property
 
 import numpy as np
 import scipy.fft
 from numpy.typing import ArrayLike, DTypeLike, NDArray
 
+from .noise import mode_gaussian
 from .spectra import GRAVITY, PHILLIPS_ALPHA, SPECTRA, dispersion_relation, wave_spectrum
 
 __all__ = [
@@ -39,7 +63,12 @@ __all__ = [
     "initial_amplitudes",
     "elevation_variance",
     "negate_wavenumber",
+    "quantised_frequency",
     "time_amplitudes",
+    "FFT_BACKENDS",
+    "inverse_fft2",
+    "ENGINES",
+    "OceanSynthesis",
     "ocean_fields",
     "FFTOcean",
 ]
@@ -89,6 +118,11 @@ class OceanGrid:
     def spacing(self) -> float:
         """Distance between neighbouring grid points L/N [m]."""
         return self.patch_size / self.resolution
+
+    @property
+    def nyquist_wavenumber(self) -> float:
+        """Largest wavenumber along an axis the grid carries, π N / L [rad m⁻¹]."""
+        return np.pi * self.resolution / self.patch_size
 
     @cached_property
     def indices(self) -> NDArray[np.int64]:
@@ -148,15 +182,11 @@ class OceanGrid:
 
     @cached_property
     def spectral_operators(self) -> NDArray[np.complex128]:
-        """Packed spectral multipliers used by :func:`ocean_fields`, shape (4, N, N) [-]."""
-        # NOTE: 4 N² complex values (64 MiB at 1024²) that depend on the grid only,
-        # kept on the immutable grid rather than in a module-level cache.
-        return _read_only(_spectral_operators(self))
+        """Packed spectral multipliers of the 8 real fields for λ = 1, shape (4, N, N) [-].
 
-    @cached_property
-    def spectral_operators_complex64(self) -> NDArray[np.complex64]:
-        """:attr:`spectral_operators` in single precision, shape (4, N, N) [-]."""
-        return _read_only(self.spectral_operators.astype(np.complex64))
+        See :func:`spectral_operators`; 64 bytes per grid point, built on first use.
+        """
+        return _read_only(spectral_operators(self, 1.0))
 
 
 @dataclass(frozen=True, eq=False)
@@ -178,15 +208,27 @@ class OceanFields:
         Unit normal (x, y, z) of the displaced surface [-]; its z component
         has the sign of ``jacobian``, so it points up wherever the surface is
         not folded.
+    jacobian_xx, jacobian_yy, jacobian_xy : ndarray, shape (N, N), optional
+        Entries of the Jacobian matrix of the horizontal map, 1 + λ ∂Dx/∂x,
+        1 + λ ∂Dy/∂y and λ ∂Dx/∂y = λ ∂Dy/∂x [-]; what a sum of patches
+        (:mod:`oceanrender.geometry.cascades`) needs to combine Jacobians.
+
+    Notes
+    -----
+    :class:`OceanSynthesis` returns the real and imaginary parts of four packed
+    complex arrays (strided views); copy a field to keep it without the others.
     """
 
-    height: NDArray[np.float64]
-    displacement_x: NDArray[np.float64]
-    displacement_y: NDArray[np.float64]
-    slope_x: NDArray[np.float64]
-    slope_y: NDArray[np.float64]
-    jacobian: NDArray[np.float64]
-    normals: NDArray[np.float64]
+    height: NDArray[np.floating]
+    displacement_x: NDArray[np.floating]
+    displacement_y: NDArray[np.floating]
+    slope_x: NDArray[np.floating]
+    slope_y: NDArray[np.floating]
+    jacobian: NDArray[np.floating]
+    normals: NDArray[np.floating]
+    jacobian_xx: NDArray[np.floating] | None = None
+    jacobian_yy: NDArray[np.floating] | None = None
+    jacobian_xy: NDArray[np.floating] | None = None
 
     @property
     def resolution(self) -> int:
@@ -194,7 +236,9 @@ class OceanFields:
         return self.height.shape[0]
 
 
-def initial_amplitudes(grid: OceanGrid, spectrum_values: ArrayLike, seed: int | None) -> NDArray[np.complex128]:
+def initial_amplitudes(
+    grid: OceanGrid, spectrum_values: ArrayLike, seed: int | None, cascade: int = 0
+) -> NDArray[np.complex128]:
     """Random Fourier amplitudes h̃₀(k) of the surface at t = 0 [m].
 
     Parameters
@@ -204,7 +248,11 @@ def initial_amplitudes(grid: OceanGrid, spectrum_values: ArrayLike, seed: int | 
     spectrum_values : array_like, shape (N, N)
         Directional wavenumber spectrum Ψ on ``grid.kx, grid.ky`` [m⁴].
     seed : int or None
-        Seed of ``np.random.default_rng``; the same seed gives the same amplitudes.
+        Random seed; the same seed gives the same amplitudes. ``None`` draws a
+        fresh seed from the operating system.
+    cascade : int, optional
+        Index of the patch in a cascade, hashed with the seed so that
+        cascades get independent noise.
 
     Returns
     -------
@@ -221,6 +269,11 @@ def initial_amplitudes(grid: OceanGrid, spectrum_values: ArrayLike, seed: int | 
     Σ_k Ψ(k) Δk² over the kept modes (:func:`elevation_variance`), the
     discrete form of m0 = ∫∫ Ψ dkx dky.
 
+    Deviation from [1]: ξ of mode (nx, ny) is
+    :func:`~oceanrender.geometry.noise.mode_gaussian` of (seed, cascade, nx,
+    ny), a hash rather than the next numbers of a sequential generator, so two
+    grids of the same patch size share the amplitudes of their common modes.
+
     References
     ----------
     .. [1] J. Tessendorf, "Simulating Ocean Water", SIGGRAPH 2001 Course Notes, eqs. 25–26.
@@ -230,9 +283,11 @@ def initial_amplitudes(grid: OceanGrid, spectrum_values: ArrayLike, seed: int | 
         raise ValueError(f"spectrum_values must have shape {(grid.resolution,) * 2}, got {psi.shape}")
     if not np.all(np.isfinite(psi) & (psi >= 0)):
         raise ValueError("spectrum_values must be finite and non-negative [m⁴]")
-    xi = np.random.default_rng(seed).standard_normal((2, *psi.shape))
+    if seed is None:
+        seed = int(np.random.SeedSequence().entropy)
+    xi = mode_gaussian(seed, cascade, grid.indices[None, :], grid.indices[:, None])
     amplitude = np.sqrt(psi * grid.dk**2 / 4) * grid.mode_mask  # P_h = Ψ Δk²/2 in eq. 25 of [1]
-    return (xi[0] + 1j * xi[1]) * amplitude  # Eq. 25 of [1]
+    return xi * amplitude  # Eq. 25 of [1]
 
 
 def elevation_variance(grid: OceanGrid, spectrum_values: ArrayLike) -> float:
@@ -258,6 +313,43 @@ def negate_wavenumber(spectrum: NDArray) -> NDArray:
     return np.roll(spectrum[..., ::-1, ::-1], 1, axis=(-2, -1))
 
 
+def quantised_frequency(omega: ArrayLike, loop_period: float | None) -> NDArray[np.float64]:
+    """Angular frequencies rounded down to multiples of 2π/T, so the sea repeats after T [rad s⁻¹].
+
+    Parameters
+    ----------
+    omega : array_like
+        Angular frequency ω ≥ 0 [rad s⁻¹].
+    loop_period : float or None
+        Loop period T [s]; ``None`` returns ω unchanged.
+
+    Returns
+    -------
+    ndarray
+        ω̄ = ⌊ω/ω₀⌋ ω₀ with ω₀ = 2π/T; 0 ≤ ω − ω̄ < ω₀.
+
+    Notes
+    -----
+    Every mode then completes a whole number of cycles in T, so the surface
+    at t + T equals the surface at t. Waves with ω < ω₀ stand still
+    (ω̄ = 0): choose T well above the period of the longest wave that should
+    move. The relative change of the phase speed, < ω₀/ω, is below 1 % for
+    waves at least 100 periods shorter than T.
+
+    References
+    ----------
+    .. [1] J. Tessendorf, "Simulating Ocean Water", SIGGRAPH 2001 Course
+       Notes, section "Looping in time", eq. 17.
+    """
+    omega = np.asarray(omega, dtype=np.float64)
+    if loop_period is None:
+        return omega
+    if not (np.isfinite(loop_period) and loop_period > 0):
+        raise ValueError(f"loop_period must be a positive time [s], got {loop_period!r}")
+    omega_0 = 2 * np.pi / loop_period  # Eq. 17 of [1]
+    return np.floor(omega / omega_0) * omega_0
+
+
 def time_amplitudes(
     h0: NDArray[np.complexfloating], omega: ArrayLike, t: float, dtype: DTypeLike = np.complex128
 ) -> NDArray[np.complexfloating]:
@@ -281,10 +373,19 @@ def time_amplitudes(
 
     Notes
     -----
-    With eq. 26's sign, the part h̃₀(k) exp(i(k·x + ωt)) travels along −k and
-    conj h̃₀(−k) exp(−iωt) along +k. Spectra symmetric in k (the Phillips
-    spectrum) are unaffected; a one-sided spectrum would need the sign of t
-    flipped to make waves run down-wind.
+    Deviation from [1]: the sign of ωt. Eq. 26 reads h̃₀(k) e^{iωt} +
+    conj h̃₀(−k) e^{−iωt}, whose part h̃₀(k) e^{i(k·x + ωt)} travels along −k,
+    against the direction in which Ψ(k) puts its variance. Here
+
+        h̃(k, t) = h̃₀(k) e^{−iωt} + conj h̃₀(−k) e^{+iωt},
+
+    so the variance Ψ(k) Δk² travels along +k, the oceanographic convention
+    for directional spectra: with a one-sided spreading function the waves
+    run down-wind. Spectra symmetric in k (Tessendorf's Phillips spectrum)
+    give the same statistics either way.
+
+    This is the reference form; :class:`OceanSynthesis` computes the same
+    amplitudes blockwise, fused with the spectral multipliers.
 
     References
     ----------
@@ -296,39 +397,467 @@ def time_amplitudes(
     # precision at large t, also when the trigonometry runs in single precision.
     angle = ((2 * np.pi) * (cycles - np.rint(cycles))).astype(np.finfo(dtype).dtype)
     phase = np.empty(angle.shape, dtype)
-    phase.real, phase.imag = np.cos(angle), np.sin(angle)  # e^{iωt}
+    phase.real, phase.imag = np.cos(angle), -np.sin(angle)  # e^{−iωt}
     h0 = np.asarray(h0).astype(dtype, copy=False)
-    return h0 * phase + np.conj(negate_wavenumber(h0) * phase)  # Eq. 26 of [1]
+    return h0 * phase + np.conj(negate_wavenumber(h0) * phase)  # Eq. 26 of [1], sign of ωt flipped
 
 
-def _spectral_operators(grid: OceanGrid) -> NDArray[np.complex128]:
-    """Multipliers of h̃ giving 8 real fields, packed in pairs f + i g, shape (4, N, N).
+def spectral_operators(grid: OceanGrid, choppiness: float = 1.0) -> NDArray[np.complex128]:
+    """Multipliers of h̃ giving 8 real fields, packed in pairs f + i g, shape (4, N, N) [-].
 
-    Order: (η, Dx), (∂η/∂x, ∂η/∂y), (Dy, ∂Dx/∂y = ∂Dy/∂x), (∂Dx/∂x, ∂Dy/∂y); the
-    origin shift to x₀ = (−L/2, −L/2) is folded in.
+    Parameters
+    ----------
+    grid : OceanGrid
+        Patch and wavenumber lattice.
+    choppiness : float, optional
+        Horizontal displacement scale λ [-], folded into the displacement terms.
+
+    Returns
+    -------
+    ndarray, complex128
+        Pairs (η, λDx), (∂η/∂x, ∂η/∂y), (λDy, λ∂Dx/∂y = λ∂Dy/∂x),
+        (λ∂Dx/∂x, λ∂Dy/∂y); the origin shift to x₀ = (−L/2, −L/2) is folded in.
+
+    Notes
+    -----
+    Each real field's multiplier m(k) satisfies m(−k) = conj m(k), so with a
+    Hermitian h̃ its transform is real and the inverse transform of f̂ + i ĝ
+    is f + i g.
     """
     kx, ky, k = grid.kx, grid.ky, grid.k
     k_safe = np.where(k == 0, 1.0, k)
-    ux, uy = kx / k_safe, ky / k_safe  # k̂, zero at k = 0
-    one = np.ones_like(kx)
-    # each real field's multiplier m(k) satisfies m(−k) = conj m(k), so the field is real
+    ux, uy = choppiness * kx / k_safe, choppiness * ky / k_safe  # λ k̂, zero at k = 0
     pairs = (
-        (one, -1j * ux),  # η, Dx: eqs. 19 and 29 of [1]
+        (1.0, -1j * ux),  # η, Dx: eqs. 19 and 29 of [1]
         (1j * kx, 1j * ky),  # ∇η: eq. 20 of [1]
         (-1j * uy, kx * uy),  # Dy; ∂Dx/∂y = (i ky)(−i kx/k)
         (kx * ux, ky * uy),  # ∂Dx/∂x = kx²/k, ∂Dy/∂y = ky²/k
     )
-    packed = np.stack([f + 1j * g for f, g in pairs])
+    packed = np.stack([np.broadcast_to(f + 1j * g, kx.shape) for f, g in pairs])
     return packed * grid.origin_sign
+
+
+def _fft_ducc0(spectra: NDArray, workers: int) -> None:
+    import ducc0  # noqa: PLC0415
+
+    ducc0.fft.c2c(spectra, axes=(-2, -1), forward=False, inorm=0, out=spectra, nthreads=workers)
+
+
+def _fft_scipy(spectra: NDArray, workers: int) -> None:
+    result = scipy.fft.ifft2(spectra, norm="forward", workers=workers, overwrite_x=True)
+    if result.ctypes.data != spectra.ctypes.data or result.strides != spectra.strides:
+        spectra[...] = result
+
+
+def _fft_numpy(spectra: NDArray, workers: int) -> None:
+    # NOTE: numpy's ``out=`` must not alias the input (measured: wrong results in place)
+    spectra[...] = np.fft.ifft2(spectra, norm="forward")
+
+
+FFT_BACKENDS: dict[str, Callable[[NDArray, int], None]] = {
+    "ducc0": _fft_ducc0,
+    "scipy": _fft_scipy,
+    "numpy": _fft_numpy,
+}
+"""In-place, unnormalised inverse 2-D FFTs over the last two axes, by library name."""
+
+
+def _default_backend() -> str:
+    try:
+        import ducc0  # noqa: F401, PLC0415
+    except ImportError:
+        return "scipy"
+    return "ducc0"
+
+
+def _resolve(backend: str, workers: int | None) -> tuple[str, int]:
+    backend = _default_backend() if backend == "auto" else backend
+    if backend not in FFT_BACKENDS:
+        raise ValueError(f"unknown FFT backend {backend!r}; known: 'auto', {', '.join(map(repr, FFT_BACKENDS))}")
+    if workers is None:
+        workers = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    if int(workers) != workers or workers < 1:
+        raise ValueError(f"workers must be a positive integer, got {workers!r}")
+    return backend, int(workers)
+
+
+def inverse_fft2(spectra: NDArray[np.complexfloating], backend: str = "auto", workers: int | None = None) -> None:
+    """In place: spectra ← Σ_k c_k e^{+2πi k·j/N} over the last two axes (no 1/N² factor).
+
+    Parameters
+    ----------
+    spectra : ndarray, complex64 or complex128, shape (..., N, N)
+        C-contiguous spectra in FFT order; overwritten by the transforms.
+    backend : str, optional
+        ``"auto"`` (ducc0 when installed, else scipy) or a key of :data:`FFT_BACKENDS`.
+    workers : int, optional
+        Threads; all the CPUs this process may use by default.
+    """
+    backend, workers = _resolve(backend, workers)
+    FFT_BACKENDS[backend](spectra, workers)
+
+
+def _row_blocks(function: Callable[[slice], None], rows: int, columns: int, workers: int,
+                pool: ThreadPoolExecutor | None) -> None:
+    """Call function(rows slice) over blocks of about 16k points, on ``workers`` threads of ``pool``.
+
+    Each thread gets one contiguous range of rows and walks it block by block,
+    so the temporaries of a block stay in cache and numpy, which releases the
+    GIL inside its loops, runs the threads in parallel.
+    """
+    block = max(1, 16384 // columns)
+
+    def run(start: int, stop: int) -> None:
+        for first in range(start, stop, block):
+            function(slice(first, min(first + block, stop)))
+
+    _split_rows(run, rows, pool, workers)
+
+
+ENGINES: tuple[str, ...] = ("numba", "numpy") if importlib.util.find_spec("numba") else ("numpy",)
+"""Pointwise engines installed here: compiled loops (numba, optional), or numpy array operations."""
+
+
+@cache
+def _default_engine() -> str:
+    """numba if it imports (it pins the numpy versions it supports), else numpy."""
+    try:
+        import numba  # noqa: F401, PLC0415
+    except ImportError:
+        return "numpy"
+    return "numba"
+
+
+def _prepare_spectra(start, stop, cos_t, sin_t, index, s, d, kx, ky, lam, one, tiny, pairs, f0, f1, f2, f3):
+    """Rows of the packed spectra, compiled by numba (:func:`_kernels`); arrays of (re, im) pairs as floats.
+
+    Row i (start ≤ i < stop ≤ N/2 + 1) from h̃ = (Re S c − Im S s) + i (Re D s + Im D c), with
+    c = cos ωt and s = −sin ωt looked up in (cos_t, sin_t) (see :class:`OceanSynthesis`),
+    and row N − i from h̃(−k) = conj h̃(k), read
+    backwards from row i's buffer. Then per point, with u = λ/k:
+    (η, λDx): h̃ (1 + kx u); (∂xη, ∂yη): h̃ (i kx − ky);
+    (λDy, λDxy): h̃ i ky u (kx − 1); (λDxx, λDyy): h̃ u (kx² + i ky²).
+    """
+    n = kx.shape[0]
+    h = np.empty(2 * n, s.dtype)
+    g = np.empty(2 * n, s.dtype)
+    for i in range(start, stop):
+        for j in range(n):
+            c, sn = cos_t[index[i, j]], sin_t[index[i, j]]
+            h[2 * j] = s[i, 2 * j] * c - s[i, 2 * j + 1] * sn
+            h[2 * j + 1] = d[i, 2 * j] * sn + d[i, 2 * j + 1] * c
+        m = n - i
+        g[0], g[1] = h[0], -h[1]
+        for j in range(1, n):
+            g[2 * j], g[2 * j + 1] = h[2 * (n - j)], -h[2 * (n - j) + 1]
+        for side in range(2):
+            if side == 1 and not 0 < i < m:
+                break  # rows 0 and N/2 are their own mirror
+            row, values = (i, h) if side == 0 else (m, g)
+            y = ky[row]
+            yy = y * y
+            a0, a1, a2, a3 = f0[row], f1[row], f2[row], f3[row]
+            for j in range(n):
+                x = kx[j]
+                hr, hi = values[2 * j], values[2 * j + 1]
+                u = lam / np.sqrt(x * x + yy + tiny)  # λ/k; finite at k = 0, where h̃ = 0
+                f = one + x * u
+                a0[2 * j], a0[2 * j + 1] = hr * f, hi * f
+                a1[2 * j], a1[2 * j + 1] = -y * hr - x * hi, x * hr - y * hi
+                if pairs == 4:  # loop-invariant: compiled as two loops
+                    f = y * u * (x - one)
+                    a2[2 * j], a2[2 * j + 1] = -f * hi, f * hr
+                    p, q = x * x * u, yy * u
+                    a3[2 * j], a3[2 * j + 1] = p * hr - q * hi, q * hr + p * hi
+
+
+def _finish_fields(start, stop, f1, f2, f3, one, jacobian, normals):
+    """J and unit normals of rows start … stop − 1 from the transformed pairs 1–3, compiled by numba."""
+    for i in range(start, stop):
+        a, b, c, jac, nor = f1[i], f2[i], f3[i], jacobian[i], normals[i]
+        for j in range(jacobian.shape[1]):
+            sx, sy, jxy, jxx, jyy = a[2 * j], a[2 * j + 1], b[2 * j + 1], c[2 * j], c[2 * j + 1]
+            det = jxx * jyy - jxy * jxy
+            cx = jxy * sy - jyy * sx
+            cy = jxy * sx - jxx * sy
+            inverse_length = one / np.sqrt(cx * cx + cy * cy + det * det)
+            jac[j] = det
+            nor[j, 0], nor[j, 1], nor[j, 2] = cx * inverse_length, cy * inverse_length, det * inverse_length
+
+
+@cache
+def _kernels() -> tuple[Callable, Callable]:
+    """The compiled (prepare, finish) kernels; numba is imported here, on first use (~0.5 s)."""
+    import numba  # noqa: PLC0415
+
+    # Fast-math without nnan/ninf: reordering and approximate reciprocal square
+    # roots (vectorised), but NaN and inf inputs still propagate.
+    # NOTE: serial kernels over a range of rows, run on Python threads (they release
+    # the GIL) rather than numba's parallel=True: its OpenMP layer kept idle threads
+    # spinning, which slowed the FFT library's threads on a 2-core machine.
+    jit = numba.njit(nogil=True, cache=True, error_model="numpy",
+                     fastmath={"contract", "arcp", "afn", "reassoc", "nsz"})
+    return jit(_prepare_spectra), jit(_finish_fields)
+
+
+def _split_rows(kernel: Callable, rows: int, pool: ThreadPoolExecutor | None, workers: int, *args) -> None:
+    """kernel(start, stop, *args) over [0, rows) cut into ``workers`` ranges run on ``pool``."""
+    bounds = np.linspace(0, rows, min(workers, rows) + 1).round().astype(int)
+    if len(bounds) == 2:
+        kernel(0, rows, *args)
+        return
+    for future in [pool.submit(kernel, a, b, *args) for a, b in zip(bounds[:-1], bounds[1:])]:
+        future.result()
+
+
+class OceanSynthesis:
+    """The time-independent part of a frame: fields of one sea at any time t, fast.
+
+    Parameters
+    ----------
+    grid : OceanGrid
+        Patch and wavenumber lattice.
+    h0 : array_like, complex, shape (N, N)
+        Amplitudes at t = 0 in FFT order [m] (:func:`initial_amplitudes`).
+    omega : array_like, shape (N, N)
+        Angular frequency [rad s⁻¹], ω(−k) = ω(k).
+    choppiness : float, optional
+        Horizontal displacement scale λ [-]; 0 gives a height field (two
+        transforms instead of four).
+    dtype : dtype_like, optional
+        ``np.float32`` (rendering) or ``np.float64`` (tests, analysis).
+    backend : str, optional
+        FFT library, see :func:`inverse_fft2`.
+    workers : int, optional
+        Threads for the transforms and the pointwise work.
+    engine : str, optional
+        ``"auto"`` (numba when installed), ``"numba"`` or ``"numpy"``: how the
+        pointwise work before and after the transforms is done.
+
+    Notes
+    -----
+    A frame (:meth:`__call__`):
+
+    1. e^{−iω_u t} for each distinct ω_u (ω depends on |k| only, so there are
+       about ten times fewer distinct values than modes at 1024²), with ωt
+       reduced to one cycle in float64;
+    2. h̃(k, t) = h̃₀(k) e^{−iωt} + conj(h̃₀(−k)) e^{iωt} (eq. 26 of [1], the
+       sign of :func:`time_amplitudes`) for the rows 0 … N/2, written with
+       c = cos ωt, s = −sin ωt as Re h̃ = Re S c − Im S s,
+       Im h̃ = Re D s + Im D c with S = h̃₀(k) + h̃₀(−k) and
+       D = h̃₀(k) − h̃₀(−k) (origin shift folded in); the other rows follow
+       from h̃(−k) = conj h̃(k). The four packed spectra are formed on the fly
+       from h̃, kx and ky (:func:`spectral_operators`, λ folded in), plus 1 + i at
+       k = 0 of the last pair, which adds the 1 of the Jacobian matrix 1 + λ∇D;
+    3. four in-place complex inverse FFTs;
+    4. J and the unit normals in one pass.
+
+    Steps 2 and 4 are compiled loops (numba) run on ``workers`` Python threads; the
+    numpy engine does the same with precomputed multipliers, row block by row
+    block. Memory held between frames: S, D and an index on half the plane,
+    10 bytes per point in single precision (numpy engine: 52). A frame
+    allocates the four packed spectra (which the returned fields are views
+    of), J and the normals: 48 bytes per point in single precision, 96 in
+    double, or reuses the previous frame's arrays when the caller no longer
+    holds them (or when given as ``out=``). Not thread-safe: one frame at a time.
+
+    References
+    ----------
+    .. [1] J. Tessendorf, "Simulating Ocean Water", SIGGRAPH 2001 Course Notes,
+       eqs. 19–20, 26 and 29, and the Jacobian of its choppy-wave section.
+    """
+
+    def __init__(
+        self,
+        grid: OceanGrid,
+        h0: ArrayLike,
+        omega: ArrayLike,
+        choppiness: float = 1.0,
+        dtype: DTypeLike = np.float32,
+        backend: str = "auto",
+        workers: int | None = None,
+        engine: str = "auto",
+    ) -> None:
+        real = np.dtype(dtype)
+        if real not in (np.float32, np.float64):
+            raise ValueError(f"dtype must be float32 or float64, got {real}")
+        engine = _default_engine() if engine == "auto" else engine
+        if engine not in ENGINES:
+            raise ValueError(f"unknown or unavailable engine {engine!r}; available: 'auto', "
+                             f"{', '.join(map(repr, ENGINES))}")
+        shape = (grid.resolution,) * 2
+        h0, omega = np.asarray(h0, dtype=np.complex128), np.asarray(omega, dtype=np.float64)
+        if h0.shape != shape or omega.shape != shape:
+            raise ValueError(f"h0 and omega must have shape {shape}, got {h0.shape} and {omega.shape}")
+        self.grid, self.choppiness, self.dtype, self.engine = grid, float(choppiness), real, engine
+        self.backend, self.workers = _resolve(backend, workers)
+        self.complex_dtype = np.result_type(real, np.complex64)
+        self.pairs = 4 if self.choppiness else 2
+        self._recycled: list[NDArray | None] = [None] * 6
+        frequency, index = np.unique(omega / (2 * np.pi), return_inverse=True)
+        self._frequency = _read_only(frequency)  # distinct ω / 2π [Hz]
+        index = index.reshape(shape).astype(np.int32)
+        if engine == "numba":
+            half = slice(0, grid.resolution // 2 + 1)
+            reflected = negate_wavenumber(h0)
+            sign = grid.origin_sign
+            self._sum = _read_only(((h0 + reflected) * sign)[half].astype(self.complex_dtype))
+            self._difference = _read_only(((h0 - reflected) * sign)[half].astype(self.complex_dtype))
+            self._index = _read_only(np.ascontiguousarray(index[half]))
+            self._k = _read_only((grid.dk * grid.indices).astype(real))
+        else:
+            self._h0 = _read_only(h0.astype(self.complex_dtype))
+            self._h0_reflected = _read_only(np.conj(negate_wavenumber(h0)).astype(self.complex_dtype))
+            self._index = _read_only(index)
+            operators = spectral_operators(grid, self.choppiness)[: self.pairs]
+            self._operators = _read_only(operators.astype(self.complex_dtype))
+
+    @cached_property
+    def _pool(self) -> ThreadPoolExecutor | None:
+        # idle between frames; threads wait on a queue, they do not spin
+        return ThreadPoolExecutor(self.workers, thread_name_prefix="ocean") if self.workers > 1 else None
+
+    @property
+    def nbytes(self) -> int:
+        """Bytes held between frames [B]."""
+        names = ("_frequency", "_index", "_sum", "_difference", "_k", "_h0", "_h0_reflected", "_operators")
+        return sum(getattr(self, name).nbytes for name in names if hasattr(self, name))
+
+    def phase_table(self, t: float) -> tuple[NDArray[np.floating], NDArray[np.floating]]:
+        """cos ω_u t and −sin ω_u t (the parts of e^{−iω_u t}) for each distinct ω_u [-]."""
+        cycles = self._frequency * t
+        cycles -= np.rint(cycles)  # one cycle in float64, as in :func:`time_amplitudes`
+        angle = (-2 * np.pi * cycles).astype(self.dtype)
+        return np.cos(angle), np.sin(angle)
+
+    def _buffers(self, out: OceanFields | None) -> tuple[list[NDArray], NDArray, NDArray]:
+        n = self.grid.resolution
+        shapes = [(n, n)] * 5 + [(n, n, 3)]
+        dtypes = [self.complex_dtype] * 4 + [self.dtype] * 2
+        if out is not None:
+            arrays = [out.height.base, out.slope_x.base, out.displacement_y.base, out.jacobian_xx.base,
+                      out.jacobian, out.normals]
+            if not all(isinstance(a, np.ndarray) and a.shape == s and a.dtype == d and a.flags.c_contiguous
+                       and a.flags.writeable for a, s, d in zip(arrays, shapes, dtypes)):
+                raise ValueError("out must be the fields of an earlier frame of this synthesis (same grid and dtype)")
+        else:
+            # NOTE: the arrays of the previous frame are reused when nothing outside
+            # holds them any more (CPython reference count: the list slot, the local
+            # name and getrefcount's argument). A fresh 48 MB at 1024² costs the
+            # kernel ~10 ms of page zeroing, a quarter of a frame; a caller that
+            # keeps a frame (or any of its arrays) gets new arrays next time.
+            previous = self._recycled if hasattr(sys, "getrefcount") else [None] * 6
+            arrays = []
+            for i in range(6):
+                array = previous[i]
+                if array is None or sys.getrefcount(array) > 3:
+                    array = np.empty(shapes[i], dtypes[i])
+                arrays.append(array)
+                array = None
+        self._recycled = arrays
+        return arrays[:4], arrays[4], arrays[5]
+
+    def __call__(self, t: float, out: OceanFields | None = None) -> OceanFields:
+        """Surface fields at time t [s]; see :func:`ocean_fields`.
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        out : OceanFields, optional
+            Fields returned by an earlier call of this synthesis, overwritten
+            in place. Without it, the previous frame's arrays are reused if
+            nothing refers to them any more, else new ones are allocated.
+        """
+        n, pairs = self.grid.resolution, self.pairs
+        cos_t, sin_t = self.phase_table(t)
+        spectra, jacobian, normals = self._buffers(out)
+        if self.engine == "numba":
+            real = self.dtype.type
+            prepare, _ = _kernels()
+            _split_rows(prepare, n // 2 + 1, self._pool, self.workers, cos_t, sin_t, self._index,
+                        self._sum.view(self.dtype), self._difference.view(self.dtype), self._k, self._k,
+                        real(self.choppiness), real(1), real(1e-30), pairs, *(a.view(self.dtype) for a in spectra))
+        else:
+            self._prepare_numpy(cos_t, sin_t, spectra)
+        if pairs == 4:
+            spectra[3][0, 0] = 1 + 1j  # the identity of 1 + λ∇D
+        for pair in spectra[:pairs]:
+            FFT_BACKENDS[self.backend](pair, self.workers)
+        if pairs == 2:  # λ = 0: no displacement, J = 1 exactly
+            spectra[0].imag = 0
+            spectra[2].fill(0)
+            spectra[3].fill(1 + 1j)
+        # η(x) = Σ h̃ e^{+ik·x}: the inverse transform without its 1/N² (eq. 19 of [1])
+        jxx, jyy, jxy = spectra[3].real, spectra[3].imag, spectra[2].imag
+        if self.engine == "numba":
+            _, finish = _kernels()
+            _split_rows(finish, n, self._pool, self.workers, *(a.view(self.dtype) for a in spectra[1:]),
+                        self.dtype.type(1), jacobian, normals)
+        else:
+            def finish(rows: slice) -> None:
+                _jacobian_and_normals(jxx[rows], jyy[rows], jxy[rows], spectra[1].real[rows],
+                                      spectra[1].imag[rows], jacobian[rows], normals[rows])
+
+            _row_blocks(finish, n, n, self.workers, self._pool)
+        return OceanFields(spectra[0].real, spectra[0].imag, spectra[2].real, spectra[1].real, spectra[1].imag,
+                           jacobian, normals, jxx, jyy, jxy)
+
+    def _prepare_numpy(self, cos_t: NDArray, sin_t: NDArray, spectra: list[NDArray]) -> None:
+        n, pairs = self.grid.resolution, self.pairs
+        table = np.empty(cos_t.shape, self.complex_dtype)
+        table.real, table.imag = cos_t, sin_t
+
+        def prepare(rows: slice) -> None:
+            phase = np.take(table, self._index[rows])
+            h = self._h0[rows] * phase
+            np.conjugate(phase, out=phase)
+            phase *= self._h0_reflected[rows]
+            h += phase  # Eq. 26 of [1]
+            for j in range(pairs):
+                np.multiply(self._operators[j, rows], h, out=spectra[j][rows])
+
+        _row_blocks(prepare, n, n, self.workers, self._pool)
+
+
+def _jacobian_and_normals(jxx, jyy, jxy, slope_x, slope_y, jacobian, normals) -> None:
+    """J = Jxx Jyy − Jxy² and the unit normal of P = (x + λDx, y + λDy, η), written into the outputs.
+
+    The normal is ∂P/∂x × ∂P/∂y = (Jxy ∂yη − Jyy ∂xη, Jxy ∂xη − Jxx ∂yη, J).
+    """
+    # NOTE: in-place operations on small blocks: np.linalg.norm on the whole
+    # (N, N, 3) result alone took as long as the single-precision FFTs at 1024².
+    np.multiply(jxx, jyy, out=jacobian)
+    scratch = jxy * jxy
+    jacobian -= scratch  # J = Jxx Jyy − Jxy Jyx, choppy waves of [1]
+    cx = jxy * slope_y
+    np.multiply(jyy, slope_x, out=scratch)
+    cx -= scratch
+    cy = jxy * slope_x
+    np.multiply(jxx, slope_y, out=scratch)
+    cy -= scratch
+    inverse_length = cx * cx
+    np.multiply(cy, cy, out=scratch)
+    inverse_length += scratch
+    np.multiply(jacobian, jacobian, out=scratch)
+    inverse_length += scratch
+    np.sqrt(inverse_length, out=inverse_length)
+    np.reciprocal(inverse_length, out=inverse_length)
+    np.multiply(cx, inverse_length, out=normals[..., 0])
+    np.multiply(cy, inverse_length, out=normals[..., 1])
+    np.multiply(jacobian, inverse_length, out=normals[..., 2])
 
 
 def ocean_fields(
     grid: OceanGrid,
-    h0: NDArray[np.complex128],
+    h0: NDArray[np.complexfloating],
     omega: ArrayLike,
     t: float,
     choppiness: float = 1.0,
     dtype: DTypeLike = np.float64,
+    backend: str = "auto",
+    workers: int | None = None,
+    engine: str = "auto",
 ) -> OceanFields:
     """Surface elevation, choppy displacement, slopes, Jacobian and normals at time t.
 
@@ -337,8 +866,7 @@ def ocean_fields(
     grid : OceanGrid
         Patch and wavenumber lattice.
     h0 : ndarray, complex, shape (N, N)
-        Amplitudes at t = 0 in FFT order [m] (:func:`initial_amplitudes`);
-        complex64 saves a cast in single precision.
+        Amplitudes at t = 0 in FFT order [m] (:func:`initial_amplitudes`).
     omega : array_like, shape (N, N)
         Angular frequency ω(|k|) [rad s⁻¹].
     t : float
@@ -348,6 +876,12 @@ def ocean_fields(
     dtype : dtype_like, optional
         ``np.float64``, or ``np.float32`` for single-precision transforms
         (about 2× faster; relative errors ~1e-6, below the float32 mesh's).
+    backend : str, optional
+        FFT library (:func:`inverse_fft2`).
+    workers : int, optional
+        Threads.
+    engine : str, optional
+        Pointwise engine, ``"auto"``, ``"numba"`` or ``"numpy"`` (:class:`OceanSynthesis`).
 
     Returns
     -------
@@ -367,48 +901,15 @@ def ocean_fields(
     ∂P/∂x × ∂P/∂y = (λ Dxy ∂yη − (1 + λ Dyy) ∂xη, λ Dxy ∂xη − (1 + λ Dxx) ∂yη, J),
     normalised; for λ = 0 it is (−∂xη, −∂yη, 1)/‖·‖.
 
+    This builds an :class:`OceanSynthesis` for one frame; to render many
+    frames, keep one (as :class:`FFTOcean` does).
+
     References
     ----------
     .. [1] J. Tessendorf, "Simulating Ocean Water", SIGGRAPH 2001 Course Notes,
        eqs. 19–20, 26 and 29, and the Jacobian of its choppy-wave section.
     """
-    single = np.dtype(dtype) == np.float32
-    if not single and np.dtype(dtype) != np.float64:
-        raise ValueError(f"dtype must be float32 or float64, got {np.dtype(dtype)}")
-    h = time_amplitudes(h0, omega, t, np.complex64 if single else np.complex128)
-    spectra = (grid.spectral_operators_complex64 if single else grid.spectral_operators) * h
-    # η(x) = Σ h̃ e^{+ik·x}: the inverse transform without its 1/N² (eq. 19 of [1])
-    packed = scipy.fft.ifft2(spectra, norm="forward", workers=-1, overwrite_x=True)
-    height, dx = packed[0].real.copy(), choppiness * packed[0].imag
-    slope_x, slope_y = packed[1].real.copy(), packed[1].imag.copy()
-    dy, dxy = choppiness * packed[2].real, choppiness * packed[2].imag
-    jxx, jyy = choppiness * packed[3].real + 1, choppiness * packed[3].imag + 1
-    jacobian = jxx * jyy - dxy * dxy  # J = Jxx Jyy − Jxy Jyx, choppy waves of [1]
-    normals = _unit_cross_product(jxx, dxy, slope_x, dxy, jyy, slope_y, jacobian)
-    return OceanFields(height, dx, dy, slope_x, slope_y, jacobian, normals)
-
-
-def _unit_cross_product(ax, ay, az, bx, by, bz, z=None) -> NDArray[np.floating]:
-    """Unit vectors along a × b for (N, N) component arrays, shape (N, N, 3).
-
-    ``z``, when given, is the already computed z component ax·by − ay·bx.
-    """
-    # NOTE: written with in-place operations; np.linalg.norm on the (N, N, 3)
-    # result alone took as long as the single-precision FFTs at 1024².
-    cx = ay * bz
-    cx -= az * by
-    cy = az * bx
-    cy -= ax * bz
-    cz = ax * by - ay * bx if z is None else z
-    inverse_length = cx * cx
-    inverse_length += cy * cy
-    inverse_length += cz * cz
-    np.sqrt(inverse_length, out=inverse_length)
-    np.reciprocal(inverse_length, out=inverse_length)
-    unit = np.empty((*cx.shape, 3), cx.dtype)
-    for i, component in enumerate((cx, cy, cz)):
-        np.multiply(component, inverse_length, out=unit[..., i])
-    return unit
+    return OceanSynthesis(grid, h0, omega, choppiness, dtype, backend, workers, engine)(t)
 
 
 @dataclass(frozen=True)
@@ -420,9 +921,10 @@ class FFTOcean:
     grid : OceanGrid
         Patch and wavenumber lattice.
     wind_speed : float
-        Wind speed U [m s⁻¹].
+        Wind speed U [m s⁻¹] (Phillips spectrum; ignored with ``spectrum_function``).
     wind_direction : float
-        Direction the wind blows toward, counter-clockwise from +x [rad].
+        Direction the wind blows toward, counter-clockwise from +x [rad]
+        (Phillips spectrum; ignored with ``spectrum_function``).
     seed : int, optional
         Seed of the random amplitudes.
     choppiness : float, optional
@@ -438,12 +940,28 @@ class FFTOcean:
     g : float, optional
         Gravitational acceleration [m s⁻²].
     dtype : dtype_like, optional
-        Precision of the fields, ``np.float64`` or ``np.float32`` (faster).
+        Precision of the fields: ``np.float32`` (default, rendering) or ``np.float64``.
+    spectrum_function : callable, optional
+        Any Ψ(kx, ky) → ndarray [m⁴] (wavenumbers in rad m⁻¹), e.g.
+        ``functools.partial(spectrum_Phillips2001, wind_speed=8.0, wind_direction=0.3)``
+        or a directional-spectrum object; overrides ``spectrum``, ``wind_speed``,
+        ``wind_direction``, ``alpha`` and ``small_wave_length``.
+    loop_period : float, optional
+        Period T [s] after which the sea repeats exactly (:func:`quantised_frequency`);
+        ``None`` (default) for the exact dispersion relation.
+    cascade : int, optional
+        Index hashed into the noise (:func:`initial_amplitudes`); 0 for a single patch.
+    fft_backend : str, optional
+        FFT library (:func:`inverse_fft2`); ``"auto"`` picks ducc0 when installed.
+    workers : int, optional
+        Threads for a frame; all the CPUs this process may use by default.
+    engine : str, optional
+        Pointwise engine (:class:`OceanSynthesis`): ``"auto"`` uses numba when installed.
 
     Notes
     -----
-    The depth only enters the dispersion relation; the spectrum stays the
-    deep-water one.
+    The depth only enters the dispersion relation; the spectrum is whatever
+    ``spectrum_function`` (or the deep-water Phillips spectrum) returns.
 
     Examples
     --------
@@ -453,8 +971,8 @@ class FFTOcean:
     """
 
     grid: OceanGrid
-    wind_speed: float
-    wind_direction: float
+    wind_speed: float = 0.0
+    wind_direction: float = 0.0
     seed: int = 0
     choppiness: float = 1.0
     depth: float = np.inf
@@ -462,11 +980,19 @@ class FFTOcean:
     small_wave_length: float = 0.0
     spectrum: str = "Phillips 2001"
     g: float = GRAVITY
-    dtype: DTypeLike = np.float64
+    dtype: DTypeLike = np.float32
+    spectrum_function: Callable[[NDArray, NDArray], NDArray] | None = None
+    loop_period: float | None = None
+    cascade: int = 0
+    fft_backend: str = "auto"
+    workers: int | None = None
+    engine: str = "auto"
 
     def __post_init__(self) -> None:
-        if self.spectrum not in SPECTRA:
+        if self.spectrum_function is None and self.spectrum not in SPECTRA:
             raise ValueError(f"unknown wave spectrum {self.spectrum!r}; known: {', '.join(map(repr, SPECTRA))}")
+        if self.spectrum_function is not None and not callable(self.spectrum_function):
+            raise ValueError(f"spectrum_function must be callable Ψ(kx, ky), got {self.spectrum_function!r}")
         if not self.wind_speed >= 0:
             raise ValueError(f"wind_speed must be ≥ 0 [m s⁻¹], got {self.wind_speed!r}")
         if not self.depth > 0:
@@ -475,10 +1001,19 @@ class FFTOcean:
             raise ValueError(f"choppiness must be ≥ 0, got {self.choppiness!r}")
         if np.dtype(self.dtype) not in (np.float32, np.float64):
             raise ValueError(f"dtype must be float32 or float64, got {self.dtype!r}")
+        if self.loop_period is not None and not (np.isfinite(self.loop_period) and self.loop_period > 0):
+            raise ValueError(f"loop_period must be a positive time [s] or None, got {self.loop_period!r}")
+        _resolve(self.fft_backend, self.workers)
+        if self.engine not in ("auto", *ENGINES):
+            raise ValueError(f"unknown or unavailable engine {self.engine!r}; available: 'auto', "
+                             f"{', '.join(map(repr, ENGINES))}")
 
     @cached_property
     def spectrum_values(self) -> NDArray[np.float64]:
         """Ψ on the wavenumber lattice, FFT order [m⁴]."""
+        if self.spectrum_function is not None:
+            psi = np.asarray(self.spectrum_function(self.grid.kx, self.grid.ky), dtype=np.float64)
+            return _read_only(np.broadcast_to(psi, self.grid.kx.shape).copy())
         psi = wave_spectrum(
             self.spectrum,
             self.grid.kx,
@@ -494,12 +1029,13 @@ class FFTOcean:
     @cached_property
     def h0(self) -> NDArray[np.complex128]:
         """Amplitudes at t = 0, h̃₀(k) [m]."""
-        return _read_only(initial_amplitudes(self.grid, self.spectrum_values, self.seed))
+        return _read_only(initial_amplitudes(self.grid, self.spectrum_values, self.seed, self.cascade))
 
     @cached_property
     def omega(self) -> NDArray[np.float64]:
-        """Angular frequency ω(|k|) on the lattice [rad s⁻¹]."""
-        return _read_only(dispersion_relation(self.grid.k, self.depth, self.g))
+        """Angular frequency ω(|k|) on the lattice, quantised with ``loop_period`` [rad s⁻¹]."""
+        omega = dispersion_relation(self.grid.k, self.depth, self.g)
+        return _read_only(quantised_frequency(omega, self.loop_period))
 
     @property
     def elevation_variance(self) -> float:
@@ -511,12 +1047,18 @@ class FFTOcean:
         """Expected significant wave height of the band-limited sea, 4 √m0 [m]."""
         return 4 * np.sqrt(self.elevation_variance)
 
-    def fields(self, t: float) -> OceanFields:
-        """Surface fields at time t [s]; see :func:`ocean_fields`."""
-        return ocean_fields(self.grid, self._h0_working, self.omega, t, self.choppiness, self.dtype)
-
     @cached_property
-    def _h0_working(self) -> NDArray[np.complexfloating]:
-        # h̃₀ in the working precision, so a single-precision frame does not cast it
-        single = np.dtype(self.dtype) == np.float32
-        return self.h0.astype(np.complex64) if single else self.h0
+    def synthesis(self) -> OceanSynthesis:
+        """The precomputed frame machinery (:class:`OceanSynthesis`)."""
+        return OceanSynthesis(self.grid, self.h0, self.omega, self.choppiness, self.dtype,
+                              self.fft_backend, self.workers, self.engine)
+
+    def fields(self, t: float, out: OceanFields | None = None) -> OceanFields:
+        """Surface fields at time t [s]; see :func:`ocean_fields`.
+
+        ``out``, the fields of an earlier call, is overwritten instead of
+        allocating new arrays (:meth:`OceanSynthesis.__call__`).
+        """
+        if self.loop_period is not None:
+            t = math.fmod(t, self.loop_period)  # exact; keeps ωt small for large t
+        return self.synthesis(t, out)

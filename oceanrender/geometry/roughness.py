@@ -13,46 +13,40 @@ from __future__ import annotations
 
 import numpy as np
 
-from .spectra import wave_spectrum
 
-
-def unresolved_slope_variance(method: str, resolution: int, patch_size: float, shortest_wavelength: float = 1e-3,
-                              samples: int = 2048, **spectrum_kwargs) -> float:
-    """Mean-square slope ⟨s_x² + s_y²⟩ [-] of waves beyond the grid's Nyquist wavenumber.
+def unresolved_slope_variance(spectrum, cutoff_wavenumber: float, shortest_wavelength: float = 1e-3,
+                              samples: int = 2048) -> float:
+    """Mean-square slope ⟨s_x² + s_y²⟩ [-] of the waves shorter than the geometry resolves.
 
     .. math:: σ² = ∫_0^{2π} ∫_{k_c}^{k_max} k² Ψ(k, θ) k \\, dk \\, dθ
 
     (the slope spectrum is k² times the elevation spectrum, e.g. Phillips 1977,
-    §4.7), with k_c = π N / L and k_max = 2π / ``shortest_wavelength``.
+    §4.7), with k_max = 2π / ``shortest_wavelength``.
 
     Parameters
     ----------
-    method : str
-        Spectrum name (see :data:`oceanrender.geometry.spectra.SPECTRA`).
-    resolution : int
-        Grid points per side N [-].
-    patch_size : float
-        Side of the patch L [m].
+    spectrum : callable
+        Directional wavenumber spectrum Ψ(kx, ky) [m⁴] (e.g. a
+        :class:`~oceanrender.geometry.spectra.DirectionalSpectrum`).
+    cutoff_wavenumber : float
+        k_c, the Nyquist wavenumber π/Δx of the finest geometry [rad m⁻¹].
     shortest_wavelength : float
         Shortest gravity-capillary wave included [m]; 1 mm by default.
     samples : int
         Log-spaced radial samples of the quadrature.
-    **spectrum_kwargs
-        Parameters of the spectrum (wind speed [m s⁻¹], ...).
 
     Returns
     -------
     float
         Total mean-square slope of the unresolved waves [-].
     """
-    k_c = np.pi * resolution / patch_size
     k_max = 2.0 * np.pi / shortest_wavelength
-    if k_max <= k_c:
+    if k_max <= cutoff_wavenumber:
         return 0.0
-    log_k = np.linspace(np.log(k_c), np.log(k_max), samples)
+    log_k = np.linspace(np.log(cutoff_wavenumber), np.log(k_max), samples)
     theta = np.linspace(0.0, 2.0 * np.pi, 361)[:-1]
     k = np.exp(log_k)[:, None]
-    psi = wave_spectrum(method, k * np.cos(theta), k * np.sin(theta), **spectrum_kwargs)
+    psi = spectrum(k * np.cos(theta), k * np.sin(theta))
     # dk = k d(ln k): integrand k² Ψ k · k over ln k; θ by the periodic rectangle rule.
     radial = (k[:, 0] ** 4) * psi.mean(axis=1) * 2.0 * np.pi
     return float(np.trapezoid(radial, log_k))

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..config import Scene
+from ..geometry.body import FrameGeometry
 from ..optics.water import WaterIOPs
 from .scene import (
     perspective_sensor,
@@ -58,19 +59,46 @@ def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
     return np.where(bad[..., None], fill, image), count
 
 
-def _water_mesh(faces: np.ndarray, positions: np.ndarray, normals: np.ndarray, bsdf: dict, medium: dict):
+#: Name of the per-vertex foam coverage attribute on the water mesh.
+FOAM_ATTRIBUTE = "vertex_foam"
+
+
+def _floats(array: np.ndarray):
+    import mitsuba as mi  # noqa: PLC0415
+
+    return mi.Float(np.ascontiguousarray(array, dtype=np.float32).ravel())
+
+
+def _water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: dict):
     import mitsuba as mi  # noqa: PLC0415
 
     props = mi.Properties()
     props["bsdf"] = mi.load_dict(bsdf)
     props["interior"] = mi.load_dict(medium)
-    mesh = mi.Mesh(WATER_ID, len(positions), len(faces), props, has_vertex_normals=True)
+    mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
+    if geometry.foam is not None:
+        mesh.add_attribute(FOAM_ATTRIBUTE, 1, _floats(geometry.foam))
     params = mi.traverse(mesh)
-    params["vertex_positions"] = mi.Float(np.ascontiguousarray(positions, dtype=np.float32).ravel())
-    params["vertex_normals"] = mi.Float(np.ascontiguousarray(normals, dtype=np.float32).ravel())
+    params["vertex_positions"] = _floats(geometry.positions)
+    params["vertex_normals"] = _floats(geometry.normals)
     params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
     params.update()
     return mesh
+
+
+def foamy_surface_bsdf(surface: dict, albedo: float) -> dict:
+    """Blend of the water surface and a white diffuse foam layer, weighted per vertex by foam coverage.
+
+    NOTE: foam is modelled as an opaque Lambertian patch of reflectance
+    ``albedo`` covering a fraction (the coverage) of the surface: the classic
+    linear coverage model of whitecaps (Koepke 1984; Frouin et al. 1996).
+    """
+    return {
+        "type": "blendbsdf",
+        "weight": {"type": "mesh_attribute", "name": FOAM_ATTRIBUTE},
+        "bsdf_0": surface,
+        "bsdf_1": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(albedo)}},
+    }
 
 
 @dataclass
@@ -86,7 +114,7 @@ class WaterRenderer:
     resolution: tuple[int, int]
 
     @classmethod
-    def build(cls, settings: Scene, iops: WaterIOPs, faces: np.ndarray, positions: np.ndarray, normals: np.ndarray,
+    def build(cls, settings: Scene, iops: WaterIOPs, faces: np.ndarray, geometry: FrameGeometry,
               roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
@@ -95,7 +123,10 @@ class WaterRenderer:
         import mitsuba as mi  # noqa: PLC0415
 
         width, height = resolution or settings.output.resolution
-        mesh = _water_mesh(faces, positions, normals, water_surface_bsdf(settings.water.ior, roughness), water_medium(iops))
+        bsdf = water_surface_bsdf(settings.water.ior, roughness)
+        if geometry.foam is not None:
+            bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
+        mesh = _water_mesh(faces, geometry, bsdf, water_medium(iops))
         scene = mi.load_dict({
             "type": "scene",
             "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth),
@@ -105,12 +136,12 @@ class WaterRenderer:
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height))
 
-    def update_water(self, positions: np.ndarray, normals: np.ndarray) -> None:
-        """Replace the water mesh's vertex positions [m] and unit normals in place."""
-        import mitsuba as mi  # noqa: PLC0415
-
-        self.params[f"{WATER_ID}.vertex_positions"] = mi.Float(np.ascontiguousarray(positions, dtype=np.float32).ravel())
-        self.params[f"{WATER_ID}.vertex_normals"] = mi.Float(np.ascontiguousarray(normals, dtype=np.float32).ravel())
+    def update_water(self, geometry: FrameGeometry) -> None:
+        """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
+        self.params[f"{WATER_ID}.vertex_positions"] = _floats(geometry.positions)
+        self.params[f"{WATER_ID}.vertex_normals"] = _floats(geometry.normals)
+        if geometry.foam is not None:
+            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = _floats(geometry.foam)
         self.params.update()
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:

@@ -1,0 +1,105 @@
+"""The closed water body of a frame: fixed triangles, vertices that move with the sea.
+
+Two layouts (scene ``[mesh] kind``): ``"patch"``, one periodic FFT patch as a
+closed box (:mod:`.mesh`), and ``"radial"``, a camera-centred polar grid out
+to the horizon (:mod:`.radial_mesh`). Foam, when enabled, is a per-vertex
+coverage in [0, 1] accumulated from the folding of the surface over a window
+of history before each frame, so every frame follows from (scene, t) alone.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..config import Scene
+from .fft_ocean import OceanFields, OceanGrid
+from .foam import foam_step
+from .mesh import water_body_faces, water_body_vertices
+from .radial_mesh import RadialGrid, radial_body_faces, radial_body_vertices
+from .sea import SeaSurface, SurfacePoints
+
+
+#: Most history steps of the foam accumulation per frame [-].
+FOAM_STEPS = 6
+
+
+@dataclass(frozen=True)
+class FrameGeometry:
+    """One frame's water body.
+
+    Attributes
+    ----------
+    positions, normals : (V, 3) float32   Vertex positions [m] and unit normals.
+    foam : (V,) float32 or None            Foam coverage per vertex [-] (0 off the surface).
+    """
+
+    positions: NDArray[np.float32]
+    normals: NDArray[np.float32]
+    foam: NDArray[np.float32] | None
+
+
+class WaterBody:
+    """Builds the frames of a scene's water body; the triangles never change."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self.sea = SeaSurface(scene.ocean)
+        mesh = scene.mesh
+        if mesh.kind == "radial":
+            center = (scene.camera.position[0], scene.camera.position[1])
+            self.radial = RadialGrid.square_cells(center, mesh.inner_radius, mesh.outer_radius, mesh.segments)
+            self.faces = radial_body_faces(self.radial.rings, self.radial.segments)
+            self.rest_x, self.rest_y = self.radial.points.T
+            self.spacing = self.radial.spacing
+        else:
+            self.radial = None
+            grid = OceanGrid(scene.ocean.resolution, scene.ocean.patch_size)
+            self.faces = water_body_faces(grid.resolution)
+            self.rest_x, self.rest_y = grid.x, grid.y
+            self.spacing = None
+        self.vertex_count = int(self.faces.max()) + 1
+
+    def surface(self, t: float) -> SurfacePoints:
+        """The displaced surface at the mesh's rest points at time t [s]."""
+        return self.sea.sample(self.rest_x, self.rest_y, t, self.spacing)
+
+    def foam(self, t: float) -> NDArray[np.float64]:
+        """Foam coverage at the rest points at t [s], accumulated over the preceding history.
+
+        The accumulation (:func:`~oceanrender.geometry.foam.foam_step`) starts
+        from clear water ``history × decay_time`` before t and advances in steps
+        of half a decay time (``FOAM_STEPS`` at most), so it is frame-rate
+        independent and reproducible for any t.
+        """
+        foam = self.scene.foam
+        window = foam.history * foam.decay_time
+        steps = int(min(FOAM_STEPS, max(2, np.ceil(2 * foam.history))))
+        times = t - window + window * np.arange(1, steps + 1) / steps
+        coverage = np.zeros(np.shape(self.rest_x))
+        for step_time in times:
+            jacobian = self.sea.jacobian(self.rest_x, self.rest_y, float(step_time), self.spacing)
+            coverage = foam_step(coverage, jacobian, window / steps, foam.threshold, foam.decay_time, foam.gain)
+        return coverage
+
+    def frame(self, t: float) -> FrameGeometry:
+        """The closed body at time t [s]."""
+        depth = self.scene.water.depth
+        surface = self.surface(t)
+        if self.radial is not None:
+            positions, normals = radial_body_vertices(self.radial, surface.displacement, surface.normals, depth)
+        else:
+            d = surface.displacement
+            fields = OceanFields(d[..., 2], d[..., 0], d[..., 1], np.zeros_like(d[..., 0]), np.zeros_like(d[..., 0]),
+                                 surface.jacobian, surface.normals)
+            positions, normals = water_body_vertices(fields, self.scene.ocean.patch_size, depth)
+        foam = None
+        if self.scene.foam.enabled:
+            top = self.foam(t)
+            if self.radial is None:  # the patch mesh repeats row/column 0 at the far edge
+                top = np.pad(top, ((0, 1), (0, 1)), mode="wrap")
+            foam = np.zeros(len(positions), np.float32)
+            foam[: top.size] = top.ravel()
+        return FrameGeometry(positions, normals, foam)

@@ -1,0 +1,285 @@
+"""A Mitsuba integrator that takes both Fresnel lobes at the camera's first water hit.
+
+Mitsuba's ``volpath`` picks, at a dielectric interface, reflection with
+probability F (the Fresnel reflectance, 2–8 % at the view angles of a sea
+seen from a few metres) and transmission otherwise. The reflected sky, which
+dominates what a viewer sees, is then estimated from a few percent of the
+samples. :class:`SplitSurfaceIntegrator` rewrites that estimator exactly:
+where a camera ray first meets a ``dielectric`` or ``roughdielectric`` surface
+it follows *both* lobes every sample,
+
+    L = L_e + L_nee + w_r L_r + w_t L_t,
+
+with (w_r, ω_r) sampled from the reflection lobe alone and (w_t, ω_t) from
+the transmission lobe alone (Mitsuba returns w_r = F, w_t = (1 − F) η_ti²
+for a smooth interface, with pdf 1: ``src/bsdfs/dielectric.cpp``), and each
+continued with a ``volpath`` one bounce shorter. The expectation is
+F L_r + (1 − F) L_t, the same as ``volpath``'s lobe-selected estimate, so the
+image converges to the same value with less noise per sample.
+
+Call :func:`register` once a variant is active, then use
+:func:`split_integrator` as the scene's ``"integrator"`` entry.
+"""
+
+from __future__ import annotations
+
+#: Name of the plugin in Mitsuba's registry.
+SPLIT_INTEGRATOR = "oceanrender_split"
+
+#: Mitsuba class names of the BSDFs whose lobes are split: ``dielectric``, ``roughdielectric``
+#: and ``blendbsdf`` (e.g. water blended with foam), when they have a transmission lobe.
+SPLIT_BSDF_CLASSES = ("SmoothDielectric", "RoughDielectric", "BlendBSDF")
+
+#: Variants in which the plugin is registered (registration is per variant).
+_REGISTERED: set[str] = set()
+
+#: The integrator class per variant (it subclasses that variant's ``mi.SamplingIntegrator``).
+_CLASSES: dict[str, type] = {}
+
+
+def split_integrator(max_depth: int, rr_depth: int = 5) -> dict:
+    """Scene-dict entry of the split-surface integrator.
+
+    Parameters
+    ----------
+    max_depth : int   Longest path, as in ``volpath`` (−1: unbounded) [-].
+    rr_depth : int    Depth after which Russian roulette starts, as in ``volpath`` [-].
+
+    Call :func:`register` (after the variant is set) before loading the scene.
+    """
+    if max_depth < -1:
+        raise ValueError(f"max_depth must be -1 (unbounded) or ≥ 0, got {max_depth}")
+    if rr_depth < 1:
+        raise ValueError(f"rr_depth must be ≥ 1, got {rr_depth}")
+    return {"type": SPLIT_INTEGRATOR, "max_depth": int(max_depth), "rr_depth": int(rr_depth)}
+
+
+def register() -> None:
+    """Register ``oceanrender_split`` with Mitsuba for the active variant.
+
+    Idempotent. Mitsuba keeps Python plugins per variant, so call it again
+    after switching variants.
+    """
+    import mitsuba as mi  # noqa: PLC0415
+
+    variant = mi.variant()
+    if variant is None:
+        raise RuntimeError("set a Mitsuba variant (oceanrender.runtime.activate_variant) before register()")
+    if variant in _REGISTERED:
+        return
+    cls = split_surface_integrator_class()
+    mi.register_integrator(SPLIT_INTEGRATOR, lambda props: cls(props))
+    _REGISTERED.add(variant)
+
+
+def split_surface_integrator_class() -> type:
+    """The :class:`SplitSurfaceIntegrator` class of the active variant."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    variant = mi.variant()
+    if variant not in _CLASSES:
+        if "polarized" in variant:
+            raise NotImplementedError("the split-surface integrator does not handle polarized variants")
+        _CLASSES[variant] = _define_class()
+    return _CLASSES[variant]
+
+
+def _define_class() -> type:
+    import drjit as dr  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+
+    jit = dr.is_jit_v(mi.Float)
+
+    def logical_not(mask):
+        # NOTE: in scalar variants masks are Python bools, for which ~True == -2.
+        return ~mask if jit else not mask
+
+    def same_object(ptr, obj, ptr_type):
+        """Per-lane ``ptr == obj`` for a Mitsuba pointer array (or a scalar pointer)."""
+        if jit:
+            return ptr == ptr_type(obj)
+        return ptr is obj
+
+    def power_heuristic(pdf_a, pdf_b):
+        """Veach's power heuristic (β = 2), as ``volpath`` uses it."""
+        a2, b2 = dr.square(pdf_a), dr.square(pdf_b)
+        denominator = a2 + b2
+        # NOTE: scalar variants compute with Python floats, which raise on 0 / 0.
+        w = a2 / dr.select(denominator > 0, denominator, 1.0)
+        return dr.select(dr.isfinite(w), w, 0.0)
+
+    def eval_emitter(emitter, si, active):
+        if not jit and emitter is None:
+            return mi.Spectrum(0.0)
+        return emitter.eval(si, active)
+
+    class SplitSurfaceIntegrator(mi.SamplingIntegrator):
+        """``volpath`` with both lobes of the camera's first water hit sampled every time.
+
+        Properties: ``max_depth`` (default −1), ``rr_depth`` (default 5),
+        ``hide_emitters`` (default false), as in ``volpath``.
+
+        Notes
+        -----
+        Path depths match ``volpath``: the continuations are ``volpath``
+        instances with ``max_depth − 1`` and ``rr_depth − 1``. At the split
+        vertex, next-event estimation uses the reflection lobe only and is
+        combined by the power heuristic with sampling of that lobe (densities of
+        the whole reflection strategy, which for a ``blendbsdf`` is the mixture
+        of its components); the
+        emission the reflected ray reaches first is added here with that MIS
+        weight, so its continuation runs with ``hide_emitters``. Emitters
+        are unreachable straight through the transmission lobe by NEE (a
+        dielectric blocks shadow rays in ``volpath`` too), so the transmitted
+        continuation counts what it meets first with full weight.
+
+        The split is only used where this bookkeeping is exact: the camera
+        is in vacuum, the split shapes have no exterior medium and no shape
+        has a ``null`` BSDF. Otherwise, and on camera rays that miss or hit
+        other surfaces, the whole sample is ``volpath``'s.
+        """
+
+        def __init__(self, props):
+            super().__init__(props)
+            self.max_depth = int(props.get("max_depth", -1))
+            self.rr_depth = int(props.get("rr_depth", 5))
+            if self.max_depth < -1:
+                raise ValueError(f"max_depth must be -1 (unbounded) or ≥ 0, got {self.max_depth}")
+            if self.rr_depth < 1:
+                raise ValueError(f"rr_depth must be ≥ 1, got {self.rr_depth}")
+            # A split needs a bounce after the first vertex: max_depth ≥ 2 (or unbounded).
+            self.splits = self.max_depth < 0 or self.max_depth >= 2
+            hide = bool(self.hide_emitters)  # NOTE: a bool attribute in Python, not a method
+            self.full = self._volpath(self.max_depth, self.rr_depth, hide)
+            self.reflected = self.transmitted = None
+            if self.splits:
+                inner_depth = -1 if self.max_depth < 0 else self.max_depth - 1
+                # NOTE: volpath refuses rr_depth < 1; rr_depth only changes the variance.
+                inner_rr = max(self.rr_depth - 1, 1)
+                self.reflected = self._volpath(inner_depth, inner_rr, hide_emitters=True)
+                self.transmitted = self._volpath(inner_depth, inner_rr, hide_emitters=False)
+
+        @staticmethod
+        def _volpath(max_depth, rr_depth, hide_emitters):
+            # NOTE: not mi.load_dict: a nested scene parser inside this constructor (which
+            # Mitsuba 3.9.1's parallel loader runs on a worker thread) intermittently broke
+            # the concurrent loading of ``sunsky`` ("basic_string::_M_create",
+            # std::bad_alloc). Nor lazily in sample(): creating a plugin there evaluates the
+            # half-traced camera rays and splits the render kernel in two.
+            props = mi.Properties("volpath")
+            props["max_depth"] = int(max_depth)
+            props["rr_depth"] = int(rr_depth)
+            props["hide_emitters"] = bool(hide_emitters)
+            return mi.PluginManager.instance().create_object(props)
+
+        def to_string(self):
+            return f"SplitSurfaceIntegrator[max_depth={self.max_depth}, rr_depth={self.rr_depth}]"
+
+        @staticmethod
+        def split_setup(scene, medium):
+            """(split BSDFs, media behind them) of ``scene``, or None where splitting is not exact."""
+            if medium is not None or not scene.shapes():
+                return None
+            bsdfs, media = [], [None]
+            for shape in scene.shapes():
+                bsdf = shape.bsdf()
+                if bsdf is None:
+                    continue
+                if mi.has_flag(bsdf.flags(), mi.BSDFFlags.Null):
+                    return None
+                if bsdf.class_name() not in SPLIT_BSDF_CLASSES or not (
+                        mi.has_flag(bsdf.flags(), mi.BSDFFlags.Reflection)
+                        and mi.has_flag(bsdf.flags(), mi.BSDFFlags.Transmission)):
+                    continue
+                if shape.exterior_medium() is not None:
+                    return None
+                if not any(bsdf is b for b in bsdfs):
+                    bsdfs.append(bsdf)
+                interior = shape.interior_medium()
+                if not any(interior is m for m in media):
+                    media.append(interior)
+            return (bsdfs, media) if bsdfs else None
+
+        def sample(self, scene, sampler, ray, medium=None, active=True):
+            full, reflected, transmitted = self.full, self.reflected, self.transmitted
+            setup = self.split_setup(scene, medium) if self.splits else None
+            if setup is None:
+                return full.sample(scene, sampler, ray, medium, active)
+            bsdfs, media = setup
+
+            # ---- The camera ray's first hit: split only on the dielectric BSDFs.
+            si = scene.ray_intersect(mi.Ray3f(ray), active)
+            split = active & si.is_valid()
+            # NOTE: in scalar variants si.bsdf() of a ray that missed dereferences a null shape.
+            bsdf = si.bsdf(ray) if jit or split else None
+            if jit:
+                on_split_bsdf = mi.Bool(False)
+                for b in bsdfs:
+                    on_split_bsdf |= same_object(bsdf, b, mi.BSDFPtr)
+                split &= on_split_bsdf
+            else:
+                split = bool(split) and any(bsdf is b for b in bsdfs)
+
+            # NOTE: volpath first, before any random number is drawn here, so a
+            # camera ray that is not split gets exactly volpath's sample.
+            full_L, full_valid, _ = full.sample(scene, sampler, ray, medium, active & logical_not(split))
+            if not jit and not split:
+                return full_L, full_valid, []
+
+            # ---- Emission of the split surface itself (depth 0: counted in full).
+            result = mi.Spectrum(0.0)
+            if not self.hide_emitters:
+                result += eval_emitter(si.emitter(scene, split), si, split)
+
+            # ---- Reflection lobe: next-event estimation (glossy only) + lobe sampling.
+            ctx_r = mi.BSDFContext(mi.TransportMode.Radiance, mi.BSDFFlags.Reflection)
+            nee = split & mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth)
+            ds, em_weight = scene.sample_emitter_direction(si, sampler.next_2d(nee), True, nee)
+            f_r, pdf_r = bsdf.eval_pdf(ctx_r, si, si.to_local(ds.d), nee)
+            w_nee = power_heuristic(ds.pdf, dr.select(ds.delta, 0.0, pdf_r))
+            result += dr.select(nee & (ds.pdf > 0), f_r * em_weight * w_nee, 0.0)
+
+            bs_r, weight_r = bsdf.sample(ctx_r, si, sampler.next_1d(split), sampler.next_2d(split), split)
+            act_r = split & (bs_r.pdf > 0)
+            ray_r = si.spawn_ray(si.to_world(bs_r.wo))
+            si_r = scene.ray_intersect(ray_r, act_r)
+            # The first emission on the reflected ray (the sky, mostly), MIS-weighted
+            # against the NEE above; its volpath continuation hides it.
+            delta_r = mi.has_flag(bs_r.sampled_type, mi.BSDFFlags.Delta)
+            glossy_r = act_r & logical_not(delta_r)
+            ds_r = mi.DirectionSample3f(scene, si_r, si)
+            if jit:
+                pdf_em = scene.pdf_emitter_direction(si, ds_r, glossy_r)
+            else:
+                # NOTE: scalar variants ignore the mask and would dereference a null emitter.
+                pdf_em = scene.pdf_emitter_direction(si, ds_r) if glossy_r and ds_r.emitter is not None else 0.0
+            # NOTE: the density of the whole reflection strategy, not bs_r.pdf: for a
+            # ``blendbsdf`` that is the chosen component's alone, and the two MIS weights
+            # would then not add up to one (volpath has that bias on blends).
+            pdf_r_strategy = bsdf.pdf(ctx_r, si, bs_r.wo, glossy_r)
+            w_r_hit = dr.select(delta_r, 1.0, power_heuristic(pdf_r_strategy, pdf_em))
+            L_r = eval_emitter(si_r.emitter(scene, act_r), si_r, act_r) * w_r_hit
+            act_r_inner = act_r & si_r.is_valid()
+            L_r += reflected.sample(scene, sampler, mi.RayDifferential3f(ray_r), None, act_r_inner)[0]
+            result += dr.select(act_r, weight_r * L_r, 0.0)
+
+            # ---- Transmission lobe: continue in the medium behind the surface.
+            ctx_t = mi.BSDFContext(mi.TransportMode.Radiance, mi.BSDFFlags.Transmission)
+            bs_t, weight_t = bsdf.sample(ctx_t, si, sampler.next_1d(split), sampler.next_2d(split), split)
+            act_t = split & (bs_t.pdf > 0)
+            ray_t = mi.RayDifferential3f(si.spawn_ray(si.to_world(bs_t.wo)))
+            target = si.target_medium(ray_t.d)
+            L_t = mi.Spectrum(0.0)
+            if jit:
+                # NOTE: sample() takes one scalar Medium for all lanes, so the
+                # lanes are grouped by the medium they enter.
+                for m in media:
+                    enters = act_t & same_object(target, m, mi.MediumPtr)
+                    L_t += dr.select(enters, transmitted.sample(scene, sampler, ray_t, m, enters)[0], 0.0)
+            elif act_t:
+                L_t = transmitted.sample(scene, sampler, ray_t, target, act_t)[0]
+            result += dr.select(act_t, weight_t * L_t, 0.0)
+
+            return dr.select(split, result, full_L), split | full_valid, []
+
+    return SplitSurfaceIntegrator
