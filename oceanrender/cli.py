@@ -52,6 +52,16 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--variant", metavar="V", help="Mitsuba variant: 'auto' or e.g. llvm_ad_spectral")
     render.add_argument("--no-progress", action="store_true", help="no progress bar")
 
+    geometry = commands.add_parser(
+        "geometry", help="export the FFT sea's per-frame maps (EXR) and meshes (PLY)",
+        description="Write, per frame and per cascade, float32 EXR maps (height, displacement, normal, Jacobian) "
+                    "in Blender's baked-ocean layout, with metadata and a geometry.json sidecar, into "
+                    "OUT/cascade_I/; with --ply also the closed water-body mesh of each patch.")
+    geometry.add_argument("scene", type=Path, help="scene file (TOML)")
+    geometry.add_argument("--frames", type=_frame_range, metavar="A:B", help="half-open frame range (default: the scene's)")
+    geometry.add_argument("--out", type=Path, metavar="DIR", required=True, help="export folder")
+    geometry.add_argument("--ply", action="store_true", help="also write mesh_NNNN.ply per frame")
+
     commands.add_parser("info", help="versions, usable Mitsuba variants and the LLVM library",
                         description="Report versions and probe which Mitsuba spectral variants work here.")
     return parser
@@ -150,7 +160,29 @@ def cmd_info(_: argparse.Namespace) -> int:
     return 0
 
 
-COMMANDS = {"render": cmd_render, "info": cmd_info}
+def cmd_geometry(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    if args.frames is not None:
+        scene = with_overrides(scene, "command line", output={"frames": args.frames})
+    if scene.ocean.model != "FFT":
+        raise UserError(f"{args.scene}: [ocean] model: geometry export needs 'FFT', got {scene.ocean.model!r}")
+    from .geometry.sea import SeaSurface  # noqa: PLC0415
+    from .io.geometry_export import export_geometry_sequence  # noqa: PLC0415
+
+    sea = SeaSurface(scene.ocean)
+    start, end = scene.output.frames
+    times = {frame: frame / scene.output.fps for frame in range(start, end)}
+    written = 0
+    for index, patch in enumerate(sea.cascades.cascades):
+        folder = args.out / f"cascade_{index}"
+        written += len(export_geometry_sequence(folder, patch, times,
+                                                mesh_depth=scene.water.depth if args.ply else None))
+        print(f"cascade {index}: patch {patch.grid.patch_size:g} m, {patch.grid.resolution}² -> {folder}")
+    print(f"wrote {written} file(s) for frames {start}:{end}")
+    return 0
+
+
+COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "info": cmd_info}
 
 
 def main(argv: list[str] | None = None) -> int:

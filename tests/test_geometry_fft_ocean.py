@@ -163,7 +163,7 @@ def test_fields_match_direct_fourier_sums(choppiness):
         assert np.abs(values.imag).max() < 1e-12
         return values.real
 
-    lam = choppiness
+    lam = -choppiness  # displaced by −λD (D of Tessendorf's eq. 29): sharp crests, see OceanSynthesis
     np.testing.assert_allclose(fields.height, direct(1.0), atol=1e-12)
     np.testing.assert_allclose(fields.slope_x, direct(1j * grid.kx), atol=1e-12)
     np.testing.assert_allclose(fields.slope_y, direct(1j * grid.ky), atol=1e-12)
@@ -398,3 +398,14 @@ def test_a_one_sided_spectrum_travels_down_wind():
     # the envelope moves 20 cells; the correlation peaks on the carrier crest (4 cells apart) nearest to it
     assert abs(correlation_peak(0.5) - 20) <= 2
     assert abs(correlation_peak(-0.5) + 20) <= 2
+
+
+def test_choppy_waves_have_sharp_crests_and_round_troughs():
+    # Gerstner / Lagrangian kinematics: particles crowd towards crests, so the
+    # horizontal map compresses (J < 1) where η is high and stretches in troughs.
+    ocean = FFTOcean(OceanGrid(128, 100.0), 9.0, 0.4, seed=2, choppiness=1.0, dtype=np.float64)
+    fields = ocean.fields(1.7)
+    assert np.corrcoef(fields.jacobian.ravel(), fields.height.ravel())[0, 1] < -0.5
+    crests = fields.height > np.quantile(fields.height, 0.95)
+    troughs = fields.height < np.quantile(fields.height, 0.05)
+    assert fields.jacobian[crests].mean() < 1 < fields.jacobian[troughs].mean()

@@ -690,6 +690,12 @@ class OceanSynthesis:
         if h0.shape != shape or omega.shape != shape:
             raise ValueError(f"h0 and omega must have shape {shape}, got {h0.shape} and {omega.shape}")
         self.grid, self.choppiness, self.dtype, self.engine = grid, float(choppiness), real, engine
+        # NOTE: the surface is displaced by −λD with D of eq. 29 of [1]. With [1]'s
+        # sign a single wave η = a cos kx moves to x + λ a sin kx, which stretches
+        # the crests and sharpens the troughs; the Lagrangian (Gerstner) solution
+        # moves particles towards the crests, x − a sin kx, and sharpens the
+        # crests. The operators and kernels below therefore get −λ.
+        self._signed_choppiness = -self.choppiness
         self.backend, self.workers = _resolve(backend, workers)
         self.complex_dtype = np.result_type(real, np.complex64)
         self.pairs = 4 if self.choppiness else 2
@@ -709,7 +715,7 @@ class OceanSynthesis:
             self._h0 = _read_only(h0.astype(self.complex_dtype))
             self._h0_reflected = _read_only(np.conj(negate_wavenumber(h0)).astype(self.complex_dtype))
             self._index = _read_only(index)
-            operators = spectral_operators(grid, self.choppiness)[: self.pairs]
+            operators = spectral_operators(grid, self._signed_choppiness)[: self.pairs]
             self._operators = _read_only(operators.astype(self.complex_dtype))
 
     @cached_property
@@ -777,7 +783,7 @@ class OceanSynthesis:
             prepare, _ = _kernels()
             _split_rows(prepare, n // 2 + 1, self._pool, self.workers, cos_t, sin_t, self._index,
                         self._sum.view(self.dtype), self._difference.view(self.dtype), self._k, self._k,
-                        real(self.choppiness), real(1), real(1e-30), pairs, *(a.view(self.dtype) for a in spectra))
+                        real(self._signed_choppiness), real(1), real(1e-30), pairs, *(a.view(self.dtype) for a in spectra))
         else:
             self._prepare_numpy(cos_t, sin_t, spectra)
         if pairs == 4:
