@@ -9,7 +9,15 @@ PY=${PYTHON:-python3}
 VENV=.venv
 STAMP=$VENV/.oceanrender-stamp
 
-llvm_ok() { ls /usr/lib/*-linux-gnu/libLLVM-1[6-9]*.so* /usr/lib/*-linux-gnu/libLLVM.so.[2-9]* /usr/lib/*-linux-gnu/libLLVM.so.1[6-9]* >/dev/null 2>&1; }
+llvm_ok() {  # a libLLVM of major version 16 or newer is present
+  local f
+  for f in /usr/lib/*-linux-gnu/libLLVM*.so* /usr/lib/llvm-*/lib/libLLVM*.so*; do
+    case "${f##*/}" in
+      libLLVM-1[6-9]*|libLLVM-[2-9][0-9]*|libLLVM.so.1[6-9]*|libLLVM.so.[2-9][0-9]*) return 0 ;;
+    esac
+  done
+  return 1
+}
 
 if ! llvm_ok; then
   if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then

@@ -6,10 +6,10 @@ side, with a smooth ``dielectric`` surface, a ``roughdielectric`` one
 (``blendbsdf``), each enclosing a homogeneous medium, under ``sunsky``, with
 a black wall to the south that can put the pools in its shadow.
 
-NOTE: every test renders the same two scenes with the same kernels: the
+NOTE: all tests render the same three scenes with the same kernels: the
 camera, the sun's direction and the medium's coefficients are changed in
-place as opaque values. A changed literal (e.g. ``sky.sun_scale``) compiles
-a new kernel, ~10 s for the split integrator on two CPU cores.
+place as opaque values. A changed literal (e.g. ``sky.sun_scale``) would
+compile a new kernel, ~10 s for the split integrator on two CPU cores.
 """
 
 import numpy as np
@@ -35,7 +35,7 @@ LOW_SUN = [0.0, -0.99619, 0.08716]
 WALL_TOP, WALL_BOTTOM = 15.0, -5.0
 VOLPATH = {"type": "volpath", "max_depth": 12, "rr_depth": 5}
 
-#: Camera 2 m above the water, 25° down (all water in view, as in scenes/open_ocean.toml).
+#: Camera 2 m above the water, 25° down: all water in view.
 LOOK_NORTH = ((0.0, 0.0, 2.0), (0.0, 4.29, 0.0))
 LOOK_SOUTH = ((0.0, 120.0, 2.0), (0.0, 115.71, 0.0))  # towards the sun: glints
 

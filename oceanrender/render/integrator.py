@@ -6,7 +6,8 @@ seen from a few metres) and transmission otherwise. The reflected sky, which
 dominates what a viewer sees, is then estimated from a few percent of the
 samples. :class:`SplitSurfaceIntegrator` rewrites that estimator exactly:
 where a camera ray first meets a ``dielectric`` or ``roughdielectric`` surface
-it follows *both* lobes every sample,
+(or a ``blendbsdf`` of one, e.g. water with foam) it follows *both* lobes
+every sample,
 
     L = L_e + L_nee + w_r L_r + w_t L_t,
 
@@ -19,6 +20,17 @@ image converges to the same value with less noise per sample.
 
 Call :func:`register` once a variant is active, then use
 :func:`split_integrator` as the scene's ``"integrator"`` entry.
+
+References
+----------
+.. [1] E. Veach and L. J. Guibas, "Optimally combining sampling techniques for
+   Monte Carlo rendering," in Proc. SIGGRAPH '95, pp. 419–428, 1995,
+   doi:10.1145/218380.218498 (the power heuristic, multi-sample MIS).
+.. [2] B. Walter, S. R. Marschner, H. Li and K. E. Torrance, "Microfacet models
+   for refraction through rough surfaces," in Proc. EGSR 2007, pp. 195–206,
+   doi:10.2312/EGWR/EGSR07/195-206 (``roughdielectric``; its η² radiance scaling).
+.. [3] Mitsuba 3.9.1 sources: ``src/integrators/volpath.cpp``,
+   ``src/bsdfs/dielectric.cpp``, ``roughdielectric.cpp``, ``blendbsdf.cpp``.
 """
 
 from __future__ import annotations
@@ -240,7 +252,7 @@ def _define_class() -> type:
             result += dr.select(nee & (ds.pdf > 0), f_r * em_weight * w_nee, 0.0)
 
             bs_r, weight_r = bsdf.sample(ctx_r, si, sampler.next_1d(split), sampler.next_2d(split), split)
-            act_r = split & (bs_r.pdf > 0)
+            act_r = split & (bs_r.pdf > 0) & dr.any(weight_r != 0.0)
             ray_r = si.spawn_ray(si.to_world(bs_r.wo))
             si_r = scene.ray_intersect(ray_r, act_r)
             # The first emission on the reflected ray (the sky, mostly), MIS-weighted
@@ -266,7 +278,7 @@ def _define_class() -> type:
             # ---- Transmission lobe: continue in the medium behind the surface.
             ctx_t = mi.BSDFContext(mi.TransportMode.Radiance, mi.BSDFFlags.Transmission)
             bs_t, weight_t = bsdf.sample(ctx_t, si, sampler.next_1d(split), sampler.next_2d(split), split)
-            act_t = split & (bs_t.pdf > 0)
+            act_t = split & (bs_t.pdf > 0) & dr.any(weight_t != 0.0)
             ray_t = mi.RayDifferential3f(si.spawn_ray(si.to_world(bs_t.wo)))
             target = si.target_medium(ray_t.d)
             L_t = mi.Spectrum(0.0)
