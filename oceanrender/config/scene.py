@@ -53,7 +53,9 @@ class RenderSettings(_Section):
     """Light transport settings."""
 
     variant: str = Field("auto", description="'auto' or a Mitsuba spectral variant")
-    integrator: Literal["volpath", "volpathmis"] = "volpath"
+    integrator: Literal["volpath", "volpathmis", "split"] = Field(
+        "split", description="'split' follows both Fresnel lobes at the first water hit (less noise, 1.3x time)"
+    )
     max_depth: int = Field(12, ge=2, le=1024, description="maximum path length [vertices]")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")

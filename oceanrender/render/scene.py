@@ -163,5 +163,15 @@ def water_surface_bsdf(ior: float, alpha: float) -> dict:
 
 
 def volumetric_integrator(kind: str, max_depth: int) -> dict:
-    """``volpath`` or ``volpathmis`` with Russian roulette after 5 bounces."""
+    """``volpath``, ``volpathmis`` or ``split`` with Russian roulette after 5 bounces.
+
+    ``split`` is :class:`oceanrender.render.integrator.SplitSurfaceIntegrator`:
+    volpath that follows both Fresnel lobes at the camera's first water hit
+    (registered here on first use).
+    """
+    if kind == "split":
+        from .integrator import register, split_integrator  # noqa: PLC0415
+
+        register()
+        return split_integrator(int(max_depth), rr_depth=5)
     return {"type": kind, "max_depth": int(max_depth), "rr_depth": 5}
