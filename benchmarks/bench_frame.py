@@ -22,15 +22,19 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scene", nargs="?", default=str(ROOT / "scenes" / "open_ocean.toml"))
     parser.add_argument("--frames", type=int, default=3, help="frames to time (after one warm-up frame)")
+    parser.add_argument("--no-foam", action="store_true", help="time with [foam] enabled = false")
+    parser.add_argument("--patch", action="store_true", help="time with [mesh] kind = 'patch' (one FFT patch)")
     args = parser.parse_args()
     warnings.filterwarnings("ignore", message=".*Matplotlib.*")
 
-    from oceanrender.config import load_scene
+    from oceanrender.config import load_scene, with_overrides
     from oceanrender.pipeline import STAGES, Sequence, frame_paths
     from oceanrender.runtime.variants import activate_variant
 
     runtime = activate_variant(load_scene(args.scene).render.variant)
     scene = load_scene(args.scene)
+    scene = with_overrides(scene, foam={"enabled": False} if args.no_foam else {},
+                           mesh={"kind": "patch"} if args.patch else {})
     tic = time.perf_counter()
     sequence = Sequence(scene, runtime.variant)
     setup = time.perf_counter() - tic
@@ -47,7 +51,9 @@ def main() -> None:
     total = sum(per_frame.values())
     samples = width * height * sequence.spp
     print(f"# {Path(args.scene).name}: {width}x{height}, {sequence.spp} spp, variant {runtime.variant}, "
-          f"ocean {scene.ocean.resolution}², {platform.processor() or platform.machine()}")
+          f"ocean {scene.ocean.cascades} x {scene.ocean.resolution}², mesh {scene.mesh.kind} "
+          f"({sequence.body.vertex_count} vertices), foam {'on' if scene.foam.enabled else 'off'}, "
+          f"integrator {scene.render.integrator}, {platform.processor() or platform.machine()}")
     print(f"setup (scene load, adapting white) {setup:.2f} s; first frame incl. JIT {first:.2f} s")
     print()
     print("| stage | s / frame | share |")

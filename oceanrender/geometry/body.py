@@ -23,7 +23,7 @@ from .sea import SeaSurface, SurfacePoints
 
 
 #: Most history steps of the foam accumulation per frame [-].
-FOAM_STEPS = 6
+FOAM_STEPS = 4
 
 
 @dataclass(frozen=True)
@@ -66,7 +66,7 @@ class WaterBody:
         """The displaced surface at the mesh's rest points at time t [s]."""
         return self.sea.sample(self.rest_x, self.rest_y, t, self.spacing)
 
-    def foam(self, t: float) -> NDArray[np.float64]:
+    def foam(self, t: float, jacobian_now: NDArray | None = None) -> NDArray[np.float64]:
         """Foam coverage at the rest points at t [s], accumulated over the preceding history.
 
         The accumulation (:func:`~oceanrender.geometry.foam.foam_step`) starts
@@ -79,8 +79,11 @@ class WaterBody:
         steps = int(min(FOAM_STEPS, max(2, np.ceil(2 * foam.history))))
         times = t - window + window * np.arange(1, steps + 1) / steps
         coverage = np.zeros(np.shape(self.rest_x))
-        for step_time in times:
-            jacobian = self.sea.jacobian(self.rest_x, self.rest_y, float(step_time), self.spacing)
+        for i, step_time in enumerate(times):
+            if i == steps - 1 and jacobian_now is not None:
+                jacobian = jacobian_now  # the last step is t itself: reuse the frame's own J
+            else:
+                jacobian = self.sea.jacobian(self.rest_x, self.rest_y, float(step_time), self.spacing)
             coverage = foam_step(coverage, jacobian, window / steps, foam.threshold, foam.decay_time, foam.gain)
         return coverage
 
@@ -97,7 +100,7 @@ class WaterBody:
             positions, normals = water_body_vertices(fields, self.scene.ocean.patch_size, depth)
         foam = None
         if self.scene.foam.enabled:
-            top = self.foam(t)
+            top = self.foam(t, surface.jacobian)
             if self.radial is None:  # the patch mesh repeats row/column 0 at the far edge
                 top = np.pad(top, ((0, 1), (0, 1)), mode="wrap")
             foam = np.zeros(len(positions), np.float32)
