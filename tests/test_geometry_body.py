@@ -64,3 +64,18 @@ def test_foam_forms_only_where_the_surface_folds():
     assert np.all(foam[top:] == 0)  # skirt and bottom carry none
     # deterministic from t alone: the same frame twice gives the same foam
     np.testing.assert_array_equal(foam, body.frame(1.0).foam)
+
+
+def test_fractal_detail_blends_onto_the_sea():
+    base = scene(ocean={"resolution": 32, "patch_size": 64.0, "cascades": 1, "wind_speed": 10.0})
+    with_detail = scene(ocean={"resolution": 32, "patch_size": 64.0, "cascades": 1, "wind_speed": 10.0,
+                               "fractal_gamma": 0.5, "fractal_size": 64})
+    a, b = WaterBody(base), WaterBody(with_detail)
+    fractal = b.sea.fractal
+    assert 0.05 <= fractal.hurst <= 0.95 and fractal.sigma > 0
+    sa, sb = a.surface(1.0), b.surface(1.0)
+    detail, _, _ = fractal.sample(b.rest_x, b.rest_y)
+    # ζ = η + γ η_fractal exactly, and the horizontal displacement is untouched
+    np.testing.assert_allclose(sb.displacement[..., 2], sa.displacement[..., 2] + 0.5 * detail, atol=1e-6)
+    np.testing.assert_allclose(sb.displacement[..., :2], sa.displacement[..., :2], atol=1e-9)
+    assert not np.allclose(sb.normals, sa.normals)

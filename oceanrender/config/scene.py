@@ -100,6 +100,15 @@ class OceanSettings(_Section):
     seed: int = Field(1, ge=0, description="random seed of the wave amplitudes")
     wave_count: int = Field(256, ge=1, le=4096, description="components of the sum-of-sines / Gerstner models")
     gerstner_steepness: float = Field(0.8, ge=0, le=3, description="Gerstner steepness q [-]")
+    fractal_gamma: float = Field(0.0, ge=0, le=2, description="weight γ of the fractal detail ζ = η + γ η_fractal [-]; 0 = off")
+    fractal_size: int = Field(512, ge=16, le=4096, description="points per side of the periodic fractal tile (power of 2)")
+
+    @field_validator("fractal_size")
+    @classmethod
+    def _power_of_two(cls, value: int) -> int:
+        if value & (value - 1):
+            raise ValueError(f"expected a power of two, got {value}")
+        return value
 
     @field_validator("resolution")
     @classmethod

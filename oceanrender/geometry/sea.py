@@ -19,6 +19,7 @@ from numpy.typing import NDArray
 
 from ..config import OceanSettings
 from .cascades import CascadeOcean, SurfaceSample, _bilinear_corners, cascade_patch_sizes
+from .fractal import estimate_fbm_parameters, fractal_detail
 from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from_spectrum
 from .spectra import DirectionalSpectrum
 
@@ -75,8 +76,64 @@ class SurfacePoints:
     jacobian: NDArray
 
 
+@dataclass(frozen=True)
+class FractalDetail:
+    """A periodic fBm tile continuing the base waves' statistics to smaller scales.
+
+    Attributes
+    ----------
+    height, slope_x, slope_y : (M, M) ndarray   η_fractal [m] and its slopes [-].
+    spacing : float                            Tile grid spacing [m].
+    hurst, sigma : float                       fBm parameters H [-] and σ [m] (rms difference at 1 m).
+    """
+
+    height: NDArray
+    slope_x: NDArray
+    slope_y: NDArray
+    spacing: float
+    hurst: float
+    sigma: float
+
+    @classmethod
+    def from_base(cls, base_height: NDArray, base_spacing: float, size: int, seed: int) -> "FractalDetail":
+        """Estimate (H, σ) from the base heights (structure function) and synthesise the tile.
+
+        The tile's spacing is half the base grid's, so the detail carries the
+        octave just below the finest resolved waves and beyond.
+        """
+        fit = estimate_fbm_parameters(np.asarray(base_height, dtype=float), base_spacing)
+        hurst = float(np.clip(fit.hurst, 0.05, 0.95))
+        spacing = base_spacing / 2.0
+        height = fractal_detail(size, spacing, hurst, fit.sigma, seed)
+        # central differences on the periodic tile [-]
+        slope_x = (np.roll(height, -1, axis=1) - np.roll(height, 1, axis=1)) / (2 * spacing)
+        slope_y = (np.roll(height, -1, axis=0) - np.roll(height, 1, axis=0)) / (2 * spacing)
+        return cls(height, slope_x, slope_y, spacing, hurst, float(fit.sigma))
+
+    def sample(self, x: NDArray, y: NDArray) -> tuple[NDArray, NDArray, NDArray]:
+        """(η, ∂η/∂x, ∂η/∂y) bilinearly interpolated at (x, y) [m], periodic."""
+        n = self.height.shape[0]
+        u, v = np.asarray(x, float) / self.spacing, np.asarray(y, float) / self.spacing
+        i0, j0 = np.floor(u).astype(np.int64), np.floor(v).astype(np.int64)
+        fu, fv = u - i0, v - j0
+        i0 %= n
+        j0 %= n
+        i1, j1 = (i0 + 1) % n, (j0 + 1) % n
+        out = []
+        for field in (self.height, self.slope_x, self.slope_y):
+            out.append((1 - fu) * (1 - fv) * field[j0, i0] + fu * (1 - fv) * field[j0, i1]
+                       + (1 - fu) * fv * field[j1, i0] + fu * fv * field[j1, i1])
+        return out[0], out[1], out[2]
+
+
 class SeaSurface:
-    """A sea surface model that can be sampled at arbitrary rest points at time t."""
+    """A sea surface model that can be sampled at arbitrary rest points at time t.
+
+    With ``fractal_gamma`` > 0 the fractal detail of :class:`FractalDetail`
+    is added, ζ = η + γ η_fractal (heights and slopes), fading out with the
+    mesh's vertex spacing like the cascades. NOTE: the detail is a static tile
+    (it has no dispersion): it adds texture below the finest FFT waves, not motion.
+    """
 
     def __init__(self, ocean: OceanSettings):
         self.settings = ocean
@@ -98,6 +155,12 @@ class SeaSurface:
                 self.spectrum, ocean.wave_count, ocean.seed, k_min=2 * np.pi / ocean.patch_size,
                 k_max=np.pi * ocean.resolution / ocean.patch_size, patch_size=ocean.patch_size,
             )
+        self.fractal = None
+        if ocean.fractal_gamma > 0 and self.cascades is not None:
+            finest = len(self.cascades.grids) - 1
+            base = self.cascades.cascades[finest].fields(0.0).height
+            self.fractal = FractalDetail.from_base(base, self.cascades.grids[finest].spacing,
+                                                   ocean.fractal_size, ocean.seed)
 
     @property
     def finest_cell(self) -> float:
@@ -124,6 +187,12 @@ class SeaSurface:
                      s.jacobian_xx - 1, s.jacobian_yy - 1, s.jacobian_xy)
             total += weight * np.stack(parts)
         height, dx, dy, sx, sy, xx, yy, xy = total
+        if self.fractal is not None:
+            gamma = self.settings.fractal_gamma
+            weight = 1.0 if spacing is None else lod_weight(spacing, self.fractal.spacing)
+            detail, detail_x, detail_y = self.fractal.sample(x, y)
+            height = height + gamma * weight * detail  # ζ = η + γ η_fractal
+            sx, sy = sx + gamma * weight * detail_x, sy + gamma * weight * detail_y
         jxx, jyy = xx + 1, yy + 1
         return SurfacePoints(np.stack([dx, dy, height], axis=-1), _normals(jxx, jyy, xy, sx, sy), jxx * jyy - xy * xy)
 
