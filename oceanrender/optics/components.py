@@ -1,0 +1,583 @@
+"""Water composition → spectral IOPs: a(λ), b(λ), b_b(λ) [m⁻¹] per component and in total.
+
+Components and their models
+---------------------------
+water           ``spectra/pure_seawater.csv`` (Williamson & Hollins 2022 a_w, Morel 1974
+                b_sw at 35 PSU) rescaled to the salinity by Morel's (1 + 0.3 S/37);
+                b_b,w = b_w / 2 (symmetric VSF).
+phytoplankton   absorption :func:`aph_HoepffnerSathyendranath1991` (Gaussian pigment bands,
+                packaged in three size classes); scattering :func:`bp_LoiselMorel1998`;
+                b_b = 0.01 b (:data:`PHYTOPLANKTON_BB_RATIO`).
+cdom            :func:`ag_BricaudMorelPrieur1981`, no scattering.
+soil, kaolinite, illite, calcite
+                mass-specific a*, b*, b_b* [m² g⁻¹] from Mie theory, ``spectra/mineral_*.csv``
+                (``spectra/make_mineral_iops.py``) times the concentration [g m⁻³].
+
+The phase function of the mixture is described by the per-component b and b_b:
+:func:`mixture_phase_function` adds the water's Rayleigh-like phase function to one
+Fournier-Forand phase function per particle component, each fitted to that component's
+backscattering ratio (:func:`fournier_forand_from_bb_ratio`);
+:func:`henyey_greenstein_g_from_bb_ratio` gives the one-parameter alternative.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Mapping
+
+import numpy as np
+
+from .tables import VISIBLE_RANGE_NM, SpectralDataError, read_spectral_table
+from .water import pure_seawater_iops
+
+#: Salinity of ``spectra/pure_seawater.csv`` [PSU] (see its header).
+TABLE_SALINITY_PSU = 35.0
+
+#: Backscattering ratio b_bp/b_p of phytoplankton-dominated particles [-]:
+#: ≈ 0.01 for organic particles of low relative index (Twardowski et al. 2001,
+#: J. Geophys. Res. 106(C7):14129; Ulloa, Sathyendranath & Platt 1994, Appl. Opt. 33:7070).
+PHYTOPLANKTON_BB_RATIO = 0.01
+
+#: Mineral components and their tables in ``spectra/``.
+MINERAL_TABLES = MappingProxyType({
+    "soil": "mineral_soil.csv",
+    "kaolinite": "mineral_kaolinite.csv",
+    "illite": "mineral_illite.csv",
+    "calcite": "mineral_calcite.csv",
+})
+
+#: Morel (1974) depolarisation-derived anisotropy of pure-water scattering, β ∝ 1 + 0.835 cos²θ.
+WATER_ANISOTROPY = 0.835
+
+
+@dataclass(frozen=True)
+class WaterComposition:
+    """What the water holds. Every concentration must be ≥ 0.
+
+    Attributes
+    ----------
+    temperature_c : float       Water temperature [°C], −2 to 40.
+    salinity_psu : float        Salinity [PSU], 0 to 42.
+    chlorophyll_mg_m3 : float   Chlorophyll a [mg m⁻³].
+    soil_g_m3 : float           Iron-oxide-bearing soil particles [g m⁻³].
+    kaolinite_g_m3 : float      Kaolinite clay particles [g m⁻³].
+    illite_g_m3 : float         Illite clay particles [g m⁻³].
+    calcite_g_m3 : float        Calcite / limestone particles [g m⁻³].
+    cdom_a440_per_m : float     CDOM absorption at 440 nm [m⁻¹].
+    cdom_slope_per_nm : float   CDOM spectral slope S [nm⁻¹], 0.005 to 0.03.
+
+    Notes
+    -----
+    The temperature is validated and kept, but pure-water absorption is the
+    table's (no Ψ_T correction): a 10 °C change alters a_w by ≲ 3 % at
+    400-700 nm and ≲ 6 % near 740 nm (Ψ_T of Sullivan et al. 2006, Appl. Opt.
+    45:5294; Röttgers et al. WOPP v3). :class:`CompositionIOPs` says so in
+    its ``notes``.
+    """
+
+    temperature_c: float = 20.0
+    salinity_psu: float = 35.0
+    chlorophyll_mg_m3: float = 0.0
+    soil_g_m3: float = 0.0
+    kaolinite_g_m3: float = 0.0
+    illite_g_m3: float = 0.0
+    calcite_g_m3: float = 0.0
+    cdom_a440_per_m: float = 0.0
+    cdom_slope_per_nm: float = 0.014
+
+    def __post_init__(self) -> None:
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+                raise ValueError(f"{f.name}: must be a number, got {value!r}")
+            if not np.isfinite(value):
+                raise ValueError(f"{f.name}: must be finite, got {value!r}")
+        for name in ("chlorophyll_mg_m3", "soil_g_m3", "kaolinite_g_m3", "illite_g_m3", "calcite_g_m3", "cdom_a440_per_m"):
+            if getattr(self, name) < 0:
+                raise ValueError(f"{name}: a concentration cannot be negative, got {getattr(self, name)!r}")
+        _in_range(self, "temperature_c", -2.0, 40.0)
+        _in_range(self, "salinity_psu", 0.0, 42.0)
+        _in_range(self, "cdom_slope_per_nm", 0.005, 0.03)
+
+    @classmethod
+    def from_mapping(cls, values: Mapping[str, float]) -> "WaterComposition":
+        """Build from a mapping (e.g. a TOML table), refusing unknown keys by name."""
+        known = [f.name for f in dataclasses.fields(cls)]
+        unknown = [key for key in values if key not in known]
+        if unknown:
+            raise ValueError(f"unknown water component(s) {', '.join(map(repr, unknown))}; known: {', '.join(known)}")
+        return cls(**values)
+
+
+def _in_range(obj, name: str, lo: float, hi: float) -> None:
+    value = getattr(obj, name)
+    if not lo <= value <= hi:
+        raise ValueError(f"{name}: {value!r} outside the supported {lo:g} to {hi:g}")
+
+
+@dataclass(frozen=True)
+class ComponentIOPs:
+    """IOPs of one component [m⁻¹] on the result's wavelengths."""
+
+    absorption: np.ndarray
+    scattering: np.ndarray
+    backscattering: np.ndarray
+
+    @property
+    def backscattering_ratio(self) -> np.ndarray:
+        """b_b / b [-]; NaN where the component does not scatter."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.where(self.scattering > 0, self.backscattering / self.scattering, np.nan)
+
+
+@dataclass(frozen=True)
+class CompositionIOPs:
+    """Spectral IOPs of a water body, per component and in total.
+
+    Attributes
+    ----------
+    wavelengths : ndarray                Wavelengths [nm].
+    composition : WaterComposition       What they were computed for.
+    components : mapping of str to ComponentIOPs
+        "water", "phytoplankton", "cdom", "soil", "kaolinite", "illite", "calcite".
+    notes : tuple of str                 Model limitations that apply to this result.
+    """
+
+    wavelengths: np.ndarray
+    composition: WaterComposition
+    components: Mapping[str, ComponentIOPs]
+    notes: tuple[str, ...] = ()
+
+    @property
+    def absorption(self) -> np.ndarray:
+        """Total absorption coefficient a(λ) [m⁻¹]."""
+        return sum(c.absorption for c in self.components.values())
+
+    @property
+    def scattering(self) -> np.ndarray:
+        """Total scattering coefficient b(λ) [m⁻¹]."""
+        return sum(c.scattering for c in self.components.values())
+
+    @property
+    def backscattering(self) -> np.ndarray:
+        """Total backscattering coefficient b_b(λ) [m⁻¹]."""
+        return sum(c.backscattering for c in self.components.values())
+
+    @property
+    def attenuation(self) -> np.ndarray:
+        """c = a + b [m⁻¹]."""
+        return self.absorption + self.scattering
+
+    @property
+    def backscattering_ratio(self) -> np.ndarray:
+        """b_b / b of the mixture, water included [-]."""
+        return self.backscattering / self.scattering
+
+    @property
+    def single_scattering_albedo(self) -> np.ndarray:
+        """ω0 = b / c [-]."""
+        return self.scattering / self.attenuation
+
+
+# ----------------------------------------------------------------------------
+# Phytoplankton
+# ----------------------------------------------------------------------------
+
+#: Chlorophyll a in vivo, unpackaged: Gaussian bands (centre [nm], σ [nm], peak a* [m² mg⁻¹]).
+HS1991_CHLOROPHYLL_A_BANDS = (
+    (384.0, 53.8, 0.037),
+    (413.0, 21.3, 0.012),
+    (435.0, 32.1, 0.039),
+    (623.0, 35.0, 0.005),
+    (676.0, 21.6, 0.020),
+    (700.0, 33.5, 0.002),
+)
+#: Photosynthetic carotenoids, per mg of carotenoid (centre [nm], σ [nm], peak a* [m² mg⁻¹]).
+HS1991_CAROTENOID_BANDS = ((490.0, 17.1, 0.0313), (532.0, 22.8, 0.0194))
+
+#: Photosynthetic carotenoids per chlorophyll a [mg mg⁻¹]: total accessory pigments ≈ TChl a
+#: on average (Trees et al. 2000, Limnol. Oceanogr. 45:1130); about half of them photosynthetic carotenoids.
+CAROTENOID_TO_CHLOROPHYLL = 0.5
+
+#: Intracellular chlorophyll c_i [mg m⁻³]: 2-10 kg m⁻³ for the cultures of Stramski, Bricaud &
+#: Morel (2001) Appl. Opt. 40:2929, Table 1 (Chl per cell over cell volume), median ≈ 4 kg m⁻³.
+INTRACELLULAR_CHLOROPHYLL_MG_M3 = 4.0e6
+
+#: Effective cell diameters of pico-, nano- and microphytoplankton [m], the typical sizes of
+#: those classes in Stramski et al. (2001) Table 1 (Synechococcus ≈ 1 µm; haptophytes and diatoms
+#: 4-8 µm; Prorocentrum micans 28 µm) within Sieburth et al.'s (1978) 0.2-2-20-200 µm classes.
+SIZE_CLASS_DIAMETERS_M = (1.0e-6, 5.0e-6, 25.0e-6)
+
+#: Taper of the phytoplankton absorption beyond the Chl a red bands [nm]: 1 at 700 nm, 0 from 750 nm.
+APH_TAPER_NM = (700.0, 750.0)
+
+
+def size_classes_Brewin2010(chlorophyll_mg_m3):
+    """Chlorophyll in pico-, nano- and microphytoplankton [mg m⁻³] (Brewin et al. 2010).
+
+    C_p = C_p^m (1 − exp(−S_p C)), C_p,n = C_p,n^m (1 − exp(−S_p,n C)),
+    C_n = C_p,n − C_p, C_m = C − C_p,n, with C_p^m = 0.107, S_p = 6.801,
+    C_p,n^m = 1.057, S_p,n = 0.851.
+
+    References
+    ----------
+    .. [1] Brewin, R. J. W. et al. (2010), "A three-component model of phytoplankton
+       size class for the Atlantic Ocean", Ecol. Model. 221, 1472-1483.
+    """
+    c = np.asarray(chlorophyll_mg_m3, dtype=float)
+    c_pn = 1.057 * (1.0 - np.exp(-0.851 * c))
+    c_p = 0.107 * (1.0 - np.exp(-6.801 * c))
+    return c_p, c_pn - c_p, c - c_pn
+
+
+def packaging_MorelBricaud1981(rho_prime):
+    """Package-effect factor Q*_a(ρ') [-] of homogeneous absorbing spheres.
+
+    Q*_a = (3 / 2ρ') [1 + 2 e^−ρ' / ρ' + 2 (e^−ρ' − 1) / ρ'²], ρ' = a_cm D, the
+    optical thickness of the cell's material across its diameter. Q*_a → 1 for ρ' → 0.
+
+    References
+    ----------
+    .. [1] Morel, A. & Bricaud, A. (1981), "Theoretical results concerning light
+       absorption in a discrete medium, and application to specific absorption of
+       phytoplankton", Deep-Sea Res. 28A, 1375-1393.
+    """
+    r = np.asarray(rho_prime, dtype=float)
+    small = r < 1e-3
+    rs = np.where(small, 1.0, r)
+    q = 1.5 / rs * (1.0 + 2.0 * np.exp(-rs) / rs + 2.0 * (np.exp(-rs) - 1.0) / rs**2)  # [1]
+    return np.where(small, 1.0 - 0.375 * r, q)  # series for small ρ': 1 − 3ρ'/8
+
+
+def aph_HoepffnerSathyendranath1991(wavelengths_nm, chlorophyll_mg_m3):
+    """Phytoplankton absorption a_φ(λ) [m⁻¹] from Gaussian pigment bands with packaging.
+
+    a_φ = Σ_k C_k a*_sol(λ) Q*_a(c_i D_k a*_sol(λ)) × taper(λ), where
+    a*_sol = Σ Chl a bands + r Σ carotenoid bands (Gaussians of [1]), C_k the
+    chlorophyll of the three size classes (:func:`size_classes_Brewin2010`),
+    Q*_a the package effect (:func:`packaging_MorelBricaud1981`), c_i
+    :data:`INTRACELLULAR_CHLOROPHYLL_MG_M3`, D_k :data:`SIZE_CLASS_DIAMETERS_M`,
+    r :data:`CAROTENOID_TO_CHLOROPHYLL`.
+
+    Parameters
+    ----------
+    wavelengths_nm : array_like    Wavelengths [nm], 360-830.
+    chlorophyll_mg_m3 : float      Chlorophyll a [mg m⁻³], ≥ 0.
+
+    Returns
+    -------
+    ndarray    a_φ(λ) [m⁻¹].
+
+    Notes
+    -----
+    * The Gaussian parameters (centre, σ, peak) are those of [1] as tabulated,
+      with that attribution, in the CSIRO EMS ecology library (Baird et al.
+      2016, Environ. Model. Softw. 78:79); they were not re-read from the paper.
+    * Extension outside 400-700 nm: below 400 nm the 384- and 413-nm Soret bands
+      of [1] are used unchanged down to 360 nm; above 700 nm the sum is tapered
+      by a raised cosine from 1 at 700 nm to 0 at 750 nm (the Chl a Q_y band
+      ends near 730 nm; no phytoplankton absorption is modelled beyond 750 nm).
+    * Against Bricaud et al. (1998) a_φ = A Chl^E (400-690 nm): median |ratio − 1|
+      ≈ 0.05-0.25 for Chl 0.3-10 mg m⁻³; at 0.03-0.1 mg m⁻³ this model is
+      ~35-55 % low at 440 nm (no photoprotective carotenoids or Chl b/c bands,
+      which oligotrophic picoplankton are rich in). See the tests.
+
+    References
+    ----------
+    .. [1] Hoepffner, N. & Sathyendranath, S. (1991), "Effect of pigment composition
+       on absorption properties of phytoplankton", Mar. Ecol. Prog. Ser. 73, 11-23.
+    .. [2] Morel, A. & Bricaud, A. (1981), Deep-Sea Res. 28A, 1375-1393.
+    .. [3] Brewin, R. J. W. et al. (2010), Ecol. Model. 221, 1472-1483.
+    """
+    wl = np.asarray(wavelengths_nm, dtype=float)
+    chl = float(chlorophyll_mg_m3)
+    if chl < 0:
+        raise ValueError(f"chlorophyll_mg_m3: a concentration cannot be negative, got {chl!r}")
+    a_sol = _gaussians(HS1991_CHLOROPHYLL_A_BANDS, wl) + CAROTENOID_TO_CHLOROPHYLL * _gaussians(HS1991_CAROTENOID_BANDS, wl)
+    a = np.zeros_like(wl)
+    for c_k, d_k in zip(size_classes_Brewin2010(chl), SIZE_CLASS_DIAMETERS_M):
+        a += c_k * a_sol * packaging_MorelBricaud1981(INTRACELLULAR_CHLOROPHYLL_MG_M3 * d_k * a_sol)
+    return a * _red_taper(wl)
+
+
+def _gaussians(bands, wl: np.ndarray) -> np.ndarray:
+    return sum(peak * np.exp(-((wl - centre) ** 2) / (2.0 * sigma**2)) for centre, sigma, peak in bands)
+
+
+def _red_taper(wl: np.ndarray) -> np.ndarray:
+    lo, hi = APH_TAPER_NM
+    t = np.clip((wl - lo) / (hi - lo), 0.0, 1.0)
+    return 0.5 * (1.0 + np.cos(np.pi * t))
+
+
+def bp_LoiselMorel1998(wavelengths_nm, chlorophyll_mg_m3):
+    """Particle scattering of Case 1 waters b_p(λ) [m⁻¹].
+
+    b_p(660) = 0.347 Chl^0.766 with a λ⁻¹ spectral shape: b_p(λ) = b_p(660) (660/λ).
+
+    Parameters
+    ----------
+    wavelengths_nm : array_like    Wavelengths [nm].
+    chlorophyll_mg_m3 : float      Chlorophyll a [mg m⁻³].
+
+    References
+    ----------
+    .. [1] Loisel, H. & Morel, A. (1998), "Light scattering and chlorophyll concentration
+       in case 1 waters: a reexamination", Limnol. Oceanogr. 43, 847-858.
+    """
+    wl = np.asarray(wavelengths_nm, dtype=float)
+    return 0.347 * float(chlorophyll_mg_m3) ** 0.766 * (660.0 / wl)  # [1]: b_p(660) = 0.347 Chl^0.766, λ⁻¹ shape
+
+
+def ag_BricaudMorelPrieur1981(wavelengths_nm, a440_per_m, slope_per_nm=0.014):
+    """CDOM absorption a_g(λ) = a_g(440) exp(−S (λ − 440)) [m⁻¹].
+
+    Parameters
+    ----------
+    wavelengths_nm : array_like    Wavelengths [nm].
+    a440_per_m : float             a_g(440) [m⁻¹].
+    slope_per_nm : float           Spectral slope S [nm⁻¹] (0.014 typical, [1]).
+
+    References
+    ----------
+    .. [1] Bricaud, A., Morel, A. & Prieur, L. (1981), "Absorption by dissolved organic
+       matter of the sea (yellow substance) in the UV and visible domains",
+       Limnol. Oceanogr. 26, 43-53.
+    """
+    wl = np.asarray(wavelengths_nm, dtype=float)
+    return a440_per_m * np.exp(-slope_per_nm * (wl - 440.0))  # [1]
+
+
+# ----------------------------------------------------------------------------
+# Phase functions
+# ----------------------------------------------------------------------------
+
+def henyey_greenstein_bb_ratio(g):
+    """Backscattered fraction of a Henyey-Greenstein phase function [-].
+
+    B(g) = (1 − g)/(2g) [(1 + g)/√(1 + g²) − 1]  (integral of HG over θ > 90°).
+
+    References
+    ----------
+    .. [1] Henyey, L. G. & Greenstein, J. L. (1941), Astrophys. J. 93, 70-83.
+    """
+    g = np.asarray(g, dtype=float)
+    gs = np.where(np.abs(g) < 1e-6, 1e-6, g)
+    return (1.0 - gs) / (2.0 * gs) * ((1.0 + gs) / np.sqrt(1.0 + gs**2) - 1.0)
+
+
+def henyey_greenstein_g_from_bb_ratio(bb_ratio):
+    """Asymmetry g of the Henyey-Greenstein phase function with backscattered fraction b_b/b [-].
+
+    Inverts :func:`henyey_greenstein_bb_ratio` (monotonic) by bisection; b_b/b in (0, 0.5].
+    """
+    b = np.asarray(bb_ratio, dtype=float)
+    if np.any(~np.isfinite(b)) or np.any((b <= 0) | (b > 0.5)):
+        raise ValueError("bb_ratio: need 0 < b_b/b <= 0.5")
+    lo, hi = np.zeros_like(b), np.full_like(b, 1.0 - 1e-12)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        too_forward = henyey_greenstein_bb_ratio(mid) < b
+        hi = np.where(too_forward, mid, hi)
+        lo = np.where(too_forward, lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def _ff_delta(theta_rad, n):
+    return 4.0 / (3.0 * (n - 1.0) ** 2) * np.sin(theta_rad / 2.0) ** 2
+
+
+def fournier_forand_bb_ratio(n, mu):
+    """Backscattered fraction of the Fournier-Forand phase function [-].
+
+    B = 1 − [1 − δ90^(ν+1) − 0.5 (1 − δ90^ν)] / [(1 − δ90) δ90^ν],
+    ν = (3 − μ)/2, δ90 = 4 sin²(45°) / (3 (n − 1)²).
+
+    References
+    ----------
+    .. [1] Fournier, G. R. & Jonasz, M. (1999), "Computer-based underwater imaging
+       analysis", Proc. SPIE 3761, 62-70.
+    .. [2] Mobley, C. D., Sundman, L. K. & Boss, E. (2002), "Phase function effects
+       on oceanic light fields", Appl. Opt. 41, 1035-1050.
+    """
+    nu = (3.0 - np.asarray(mu, dtype=float)) / 2.0
+    d90 = _ff_delta(np.pi / 2.0, np.asarray(n, dtype=float))
+    return 1.0 - (1.0 - d90 ** (nu + 1.0) - 0.5 * (1.0 - d90**nu)) / ((1.0 - d90) * d90**nu)
+
+
+def fournier_forand_from_bb_ratio(bb_ratio):
+    """Fournier-Forand parameters (n, μ) with backscattered fraction b_b/b.
+
+    Follows Mobley et al. (2002): n and the Junge slope μ move together along
+    n = 1.01 + 0.1542 (μ − 3), and μ is solved for so that B(n, μ) = b_b/b.
+    Valid for b_b/b in about 0.0003-0.3 (μ in 3.0005-5).
+
+    Returns
+    -------
+    n, mu : ndarray   Real relative index [-] and Junge slope [-].
+    """
+    b = np.asarray(bb_ratio, dtype=float)
+    line = lambda mu: 1.01 + 0.1542 * (mu - 3.0)  # noqa: E731  (Mobley et al. 2002, Sec. 2)
+    lo_mu, hi_mu = 3.0005, 5.0
+    b_min, b_max = fournier_forand_bb_ratio(line(lo_mu), lo_mu), fournier_forand_bb_ratio(line(hi_mu), hi_mu)
+    if np.any(~np.isfinite(b)) or np.any((b < b_min) | (b > b_max)):
+        raise ValueError(f"bb_ratio: Fournier-Forand fit needs {b_min:.2g} <= b_b/b <= {b_max:.2g}")
+    lo, hi = np.full_like(b, lo_mu), np.full_like(b, hi_mu)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        low_b = fournier_forand_bb_ratio(line(mid), mid) < b
+        lo = np.where(low_b, mid, lo)
+        hi = np.where(low_b, hi, mid)
+    mu = 0.5 * (lo + hi)
+    return line(mu), mu
+
+
+def fournier_forand_phase_function(angles_deg, n, mu):
+    """Fournier-Forand phase function p(θ) [sr⁻¹], 2π ∫ p dcosθ = 1 (Mobley et al. 2002, Sec. 2).
+
+    ``n`` and ``mu`` broadcast against each other; the angle axis is last.
+    """
+    # NOTE: p diverges (integrably, as θ^(μ−5)) at θ = 0; θ below 1e-9 rad is evaluated at 1e-9 rad.
+    theta = np.maximum(np.radians(np.asarray(angles_deg, dtype=float)), 1e-9)
+    n = np.asarray(n, dtype=float)[..., None]
+    nu = (3.0 - np.asarray(mu, dtype=float)[..., None]) / 2.0
+    d = _ff_delta(theta, n)
+    d180 = _ff_delta(np.pi, n)
+    s2 = np.sin(theta / 2.0) ** 2
+    first = (nu * (1 - d) - (1 - d**nu) + (d * (1 - d**nu) - nu * (1 - d)) / s2) / (4 * np.pi * (1 - d) ** 2 * d**nu)
+    second = (1 - d180**nu) / (16 * np.pi * (d180 - 1) * d180**nu) * (3 * np.cos(theta) ** 2 - 1)
+    return first + second
+
+
+def pure_water_phase_function(angles_deg):
+    """Phase function of pure (sea) water p(θ) = 3 (1 + 0.835 cos²θ) / (4π (3 + 0.835)) [sr⁻¹].
+
+    References
+    ----------
+    .. [1] Morel, A. (1974), in Optical Aspects of Oceanography, Academic Press, 1-24.
+    """
+    c = np.cos(np.radians(np.asarray(angles_deg, dtype=float)))
+    return 3.0 * (1.0 + WATER_ANISOTROPY * c**2) / (4.0 * np.pi * (3.0 + WATER_ANISOTROPY))
+
+
+def mixture_phase_function(iops: CompositionIOPs, angles_deg) -> np.ndarray:
+    """Phase function of the mixture p(λ, θ) [sr⁻¹], shape (n_λ, n_θ).
+
+    p = [b_w p_w + Σ_k b_k p_FF(θ; b_b,k / b_k)] / b: pure water's phase
+    function plus one Fournier-Forand phase function per scattering particle
+    component, fitted to that component's backscattering ratio.
+    """
+    angles = np.asarray(angles_deg, dtype=float)
+    total = np.zeros((iops.wavelengths.size, angles.size))
+    for name, comp in iops.components.items():
+        if not np.any(comp.scattering > 0):
+            continue
+        if name == "water":
+            total += comp.scattering[:, None] * pure_water_phase_function(angles)[None, :]
+            continue
+        n, mu = fournier_forand_from_bb_ratio(comp.backscattering_ratio)
+        total += comp.scattering[:, None] * fournier_forand_phase_function(angles, n, mu)
+    return total / iops.scattering[:, None]
+
+
+# ----------------------------------------------------------------------------
+# Composition → IOPs
+# ----------------------------------------------------------------------------
+
+@functools.lru_cache(maxsize=None)
+def _mineral_table(name: str):
+    return read_spectral_table(MINERAL_TABLES[name], required=("a_star_m2_per_g", "b_star_m2_per_g", "bb_star_m2_per_g"))
+
+
+@functools.lru_cache(maxsize=1)
+def _water_table():
+    return pure_seawater_iops()
+
+
+def mineral_mass_specific_iops(name: str, wavelengths_nm) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """a*, b*, b_b* [m² g⁻¹] of mineral ``name`` from its table in ``spectra/``."""
+    if name not in MINERAL_TABLES:
+        raise KeyError(f"unknown mineral {name!r}; known: {', '.join(MINERAL_TABLES)}")
+    table = _mineral_table(name)
+    wl = np.asarray(wavelengths_nm, dtype=float)
+    return tuple(table.at(col, wl) for col in ("a_star_m2_per_g", "b_star_m2_per_g", "bb_star_m2_per_g"))
+
+
+def composition_iops(composition: WaterComposition, wavelengths_nm) -> CompositionIOPs:
+    """Spectral IOPs [m⁻¹] of ``composition`` at ``wavelengths_nm`` (within 360-830 nm).
+
+    Parameters
+    ----------
+    composition : WaterComposition   What the water holds.
+    wavelengths_nm : array_like      Wavelengths [nm], inside 360-830 nm.
+
+    Returns
+    -------
+    CompositionIOPs   a, b, b_b per component and in total [m⁻¹].
+    """
+    if not isinstance(composition, WaterComposition):
+        raise TypeError(f"composition: expected a WaterComposition, got {type(composition).__name__}")
+    wl = np.atleast_1d(np.asarray(wavelengths_nm, dtype=float))
+    lo, hi = VISIBLE_RANGE_NM
+    if wl.size == 0 or not np.all(np.isfinite(wl)) or wl.min() < lo or wl.max() > hi:
+        raise SpectralDataError(f"wavelengths_nm: must lie within {lo:g}-{hi:g} nm, the range of the IOP data "
+                                f"(got {np.nanmin(wl) if wl.size else 'none'}-{np.nanmax(wl) if wl.size else 'none'} nm); "
+                                "no extrapolation")
+    c = composition
+    water = _water_table()
+    salinity_factor = (1.0 + 0.3 * c.salinity_psu / 37.0) / (1.0 + 0.3 * TABLE_SALINITY_PSU / 37.0)  # Morel 1974
+    b_w = np.interp(wl, water.wavelengths, water.scattering) * salinity_factor
+    zero = np.zeros_like(wl)
+    parts = {
+        "water": ComponentIOPs(np.interp(wl, water.wavelengths, water.absorption), b_w, 0.5 * b_w),
+    }
+    b_ph = bp_LoiselMorel1998(wl, c.chlorophyll_mg_m3)
+    parts["phytoplankton"] = ComponentIOPs(aph_HoepffnerSathyendranath1991(wl, c.chlorophyll_mg_m3), b_ph, PHYTOPLANKTON_BB_RATIO * b_ph)
+    parts["cdom"] = ComponentIOPs(ag_BricaudMorelPrieur1981(wl, c.cdom_a440_per_m, c.cdom_slope_per_nm), zero, zero)
+    for name in MINERAL_TABLES:
+        conc = getattr(c, f"{name}_g_m3")
+        a_s, b_s, bb_s = mineral_mass_specific_iops(name, wl)
+        parts[name] = ComponentIOPs(conc * a_s, conc * b_s, conc * bb_s)
+    notes = (
+        f"pure-water absorption is the table's (no temperature correction); temperature_c={c.temperature_c:g} "
+        "changes a_w by <~3 % (400-700 nm) and <~6 % (700-830 nm) per 10 degC",
+        "phytoplankton absorption is tapered to 0 between 700 and 750 nm",
+    )
+    return CompositionIOPs(wavelengths=wl, composition=c, components=MappingProxyType(parts), notes=notes)
+
+
+# ----------------------------------------------------------------------------
+# Presets
+# ----------------------------------------------------------------------------
+
+PRESETS = MappingProxyType({
+    # Oligotrophic subtropical gyre: Chl ≈ 0.05 mg m⁻³ (surface Chl of the gyres is 0.02-0.1 mg m⁻³;
+    # the clearest, South Pacific gyre, ≈ 0.02-0.03: Morel et al. 2007, Limnol. Oceanogr. 52:217);
+    # CDOM a_g(440) ≈ 0.005 m⁻¹ (of order 1e-3 to 1e-2 m⁻¹ there, same source); no terrigenous minerals.
+    "clear open ocean": WaterComposition(temperature_c=22.0, salinity_psu=36.0, chlorophyll_mg_m3=0.05,
+                                         cdom_a440_per_m=0.005),
+    # Productive shelf water: Chl ≈ 2 mg m⁻³; SPM ≈ 1.5 g m⁻³ with a clay-dominated mineral part
+    # (COASTLOOC North Sea / English Channel stations: SPM 0.5-5 g m⁻³, Babin et al. 2003, JGR
+    # 108:3211); a_g(440) ≈ 0.1 m⁻¹, S = 0.0176 nm⁻¹ (Babin et al. 2003 mean CDOM slope).
+    "green coastal": WaterComposition(temperature_c=15.0, salinity_psu=33.0, chlorophyll_mg_m3=2.0,
+                                      illite_g_m3=0.6, kaolinite_g_m3=0.3, soil_g_m3=0.2, calcite_g_m3=0.2,
+                                      cdom_a440_per_m=0.1, cdom_slope_per_nm=0.0176),
+    # River-influenced turbid estuary: SPM ≈ 30 g m⁻³ of iron-oxide-bearing soil and clays (turbidity
+    # maxima of macrotidal estuaries such as the Gironde hold tens to thousands of g m⁻³; Doxaran et al.
+    # 2009, Estuar. Coast. Shelf Sci. 81:321); Chl 5 mg m⁻³; a_g(440) ≈ 1 m⁻¹, typical of river plumes
+    # (an assumption of this preset); brackish 15 PSU.
+    "turbid brown estuary": WaterComposition(temperature_c=18.0, salinity_psu=15.0, chlorophyll_mg_m3=5.0,
+                                             soil_g_m3=12.0, illite_g_m3=10.0, kaolinite_g_m3=6.0, calcite_g_m3=2.0,
+                                             cdom_a440_per_m=1.0, cdom_slope_per_nm=0.0176),
+})
+
+
+def preset(name: str) -> WaterComposition:
+    """The preset ``name``; refuses unknown names with the list of known ones."""
+    try:
+        return PRESETS[name]
+    except KeyError:
+        raise KeyError(f"unknown water preset {name!r}; known: {', '.join(PRESETS)}") from None
