@@ -91,6 +91,12 @@ def check_resources(scene: Scene, source: str) -> None:
         pure_seawater_iops(scene.water.iop_table)
     except SpectralDataError as exc:
         raise UserError(f"{source}: [water] iop_table: {exc}") from None
+    from .pipeline import water_composition  # noqa: PLC0415
+
+    try:
+        water_composition(scene)
+    except ValueError as exc:
+        raise UserError(f"{source}: [composition]: {exc}") from None
 
 
 def activate(requested: str):

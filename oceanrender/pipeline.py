@@ -19,7 +19,7 @@ from .config import Scene
 from .geometry.body import FrameGeometry, WaterBody
 from .geometry.roughness import beckmann_alpha, unresolved_slope_variance
 from .io.frames import frame_is_complete, write_exr, write_png
-from .optics.water import pure_seawater_iops
+from .optics.water import MediumOptics, WaterIOPs, composition_optics, pure_seawater_iops
 from .render.renderer import WaterRenderer, adapting_white_XYZ
 from .vision.brightness import adaptation_luminance_log_average
 from .vision.display import encode_sRGB_8bit
@@ -41,6 +41,26 @@ def frame_paths(out_dir: str | Path, frame: int) -> FramePaths:
     """``<out_dir>/frame_NNNN.exr`` and ``.png``."""
     out_dir = Path(out_dir)
     return FramePaths(exr=out_dir / f"frame_{frame:04d}.exr", png=out_dir / f"frame_{frame:04d}.png")
+
+
+def water_composition(scene: Scene):
+    """The scene's :class:`~oceanrender.optics.components.WaterComposition`, or None for pure sea water."""
+    if scene.composition is None:
+        return None
+    from .optics.components import WaterComposition, preset  # noqa: PLC0415
+
+    settings = scene.composition.model_dump()
+    base = preset(settings.pop("preset")) if scene.composition.preset else WaterComposition()
+    explicit = {key: value for key, value in settings.items() if value is not None}
+    return WaterComposition(**{**base.__dict__, **explicit})
+
+
+def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
+    """What the medium is made of: pure sea water from its table, or the ``[composition]``."""
+    composition = water_composition(scene)
+    if composition is None:
+        return pure_seawater_iops(scene.water.iop_table)
+    return composition_optics(composition)
 
 
 def surface_roughness(scene: Scene, body: WaterBody) -> float:
@@ -94,7 +114,7 @@ class Sequence:
         self.resolution = tuple(resolution or scene.output.resolution)
         self.body = WaterBody(scene)
         self.faces = self.body.faces
-        self.iops = pure_seawater_iops(scene.water.iop_table)
+        self.iops = water_optics(scene)
         first = self.geometry(scene.output.frames[0])
         self.roughness = surface_roughness(scene, self.body)
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,

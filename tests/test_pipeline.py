@@ -149,3 +149,29 @@ def test_cli_geometry_export(tmp_path, capsys):
         maps = read_frame_maps(folder, 1)
         assert maps  # height, displacement, normal, Jacobian read back
     assert "wrote" in capsys.readouterr().out
+
+
+def test_composition_builds_the_medium():
+    from oceanrender.optics.water import MediumOptics
+    from oceanrender.pipeline import water_composition, water_optics
+    from oceanrender.render.scene import water_medium
+
+    pure = tiny_scene()
+    assert water_composition(pure) is None
+    coastal = scene_from_dict({"name": "c", "composition": {"preset": "green coastal", "chlorophyll_mg_m3": 2.5}})
+    assert water_composition(coastal).chlorophyll_mg_m3 == 2.5  # explicit keys override the preset
+    optics = water_optics(coastal)
+    assert isinstance(optics, MediumOptics) and 0.5 < optics.particle_fraction <= 1 and 0.8 < optics.particle_g < 1
+    medium = water_medium(optics)
+    assert medium["phase"]["type"] == "blendphase"
+    # more stuff in the water: more attenuation than pure sea water at every wavelength
+    pure_c = water_optics(pure).attenuation
+    wl = optics.iops.wavelengths
+    assert np.all(optics.iops.attenuation > np.interp(wl, water_optics(pure).wavelengths, pure_c))
+
+
+def test_cli_refuses_a_bad_composition(tmp_path, capsys):
+    path = tmp_path / "bad.toml"
+    path.write_text("[composition]\nsoil_g_m3 = -1.0\n")
+    assert main(["render", str(path)]) == 2
+    assert "[composition] soil_g_m3" in capsys.readouterr().err

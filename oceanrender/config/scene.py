@@ -175,6 +175,24 @@ class WaterSettings(_Section):
         return value
 
 
+class CompositionSettings(_Section):
+    """What is in the water (issue 4): a preset and/or concentrations of each component.
+
+    Keys left out take the preset's value (or zero without a preset).
+    """
+
+    preset: Literal["clear open ocean", "green coastal", "turbid brown estuary"] | None = None
+    temperature_c: float | None = Field(None, ge=-2, le=40, description="water temperature [°C]")
+    salinity_psu: float | None = Field(None, ge=0, le=42, description="salinity [PSU]")
+    chlorophyll_mg_m3: float | None = Field(None, ge=0, le=1000, description="chlorophyll a [mg m⁻³]")
+    soil_g_m3: float | None = Field(None, ge=0, le=10_000, description="soil particles [g m⁻³]")
+    kaolinite_g_m3: float | None = Field(None, ge=0, le=10_000, description="kaolinite clay [g m⁻³]")
+    illite_g_m3: float | None = Field(None, ge=0, le=10_000, description="illite clay [g m⁻³]")
+    calcite_g_m3: float | None = Field(None, ge=0, le=10_000, description="limestone/calcite particles [g m⁻³]")
+    cdom_a440_per_m: float | None = Field(None, ge=0, le=100, description="CDOM absorption at 440 nm [m⁻¹]")
+    cdom_slope_per_nm: float | None = Field(None, ge=0.005, le=0.03, description="CDOM spectral slope [nm⁻¹]")
+
+
 class SunSettings(_Section):
     """Sun and sky: Mitsuba's ``sunsky`` (Hosek & Wilkie 2012/2013)."""
 
@@ -228,6 +246,7 @@ class Scene(_Section):
     mesh: MeshSettings = MeshSettings()
     foam: FoamSettings = FoamSettings()
     water: WaterSettings = WaterSettings()
+    composition: CompositionSettings | None = None
     sun: SunSettings = SunSettings()
     camera: CameraSettings = CameraSettings()
     vision: VisionSettings = VisionSettings()

@@ -12,7 +12,7 @@ import numpy as np
 
 from ..config import Scene
 from ..geometry.body import FrameGeometry
-from ..optics.water import WaterIOPs
+from ..optics.water import MediumOptics, WaterIOPs
 from .scene import (
     perspective_sensor,
     sunsky_emitter,
@@ -114,7 +114,7 @@ class WaterRenderer:
     resolution: tuple[int, int]
 
     @classmethod
-    def build(cls, settings: Scene, iops: WaterIOPs, faces: np.ndarray, geometry: FrameGeometry,
+    def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
               roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 

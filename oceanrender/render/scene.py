@@ -15,7 +15,7 @@ import colour
 import numpy as np
 
 from ..config import CameraSettings, SunSettings
-from ..optics.water import WaterIOPs
+from ..optics.water import MediumOptics, WaterIOPs
 
 #: Name of the CIE 1931 2° observer in colour-science.
 CIE1931 = "CIE 1931 2 Degree Standard Observer"
@@ -115,25 +115,35 @@ def irregular_spectrum(wavelengths: np.ndarray, values: np.ndarray) -> dict:
     }
 
 
-def water_medium(iops: WaterIOPs) -> dict:
+def water_medium(optics: WaterIOPs | MediumOptics) -> dict:
     """Homogeneous medium from the water's IOPs (σ_t = a + b [m⁻¹], albedo b/c).
 
     The phase function is Mitsuba's ``rayleigh`` (3/16π)(1 + cos²θ): the
     shape of molecular scattering; pure water's own VSF has 0.835 cos²θ
     (Morel 1974) because of depolarisation — within 5 % of this in the
-    forward/backward directions.
+    forward/backward directions. With particles (:class:`MediumOptics`) the
+    phase function is ``blendphase`` of that Rayleigh shape and a
+    Henyey–Greenstein lobe, weighted by the particles' share of scattering.
     """
+    if isinstance(optics, MediumOptics):
+        iops, fraction, g = optics.iops, optics.particle_fraction, optics.particle_g
+    else:
+        iops, fraction, g = optics, 0.0, 0.0
     lo, hi = FILM_RANGE_NM
     if iops.wavelengths[0] > lo or iops.wavelengths[-1] < hi:
         raise ValueError(
             f"water IOPs cover {iops.wavelengths[0]:g}-{iops.wavelengths[-1]:g} nm; "
             f"the medium must be defined over {lo:g}-{hi:g} nm"
         )
+    phase = {"type": "rayleigh"}
+    if fraction > 0:
+        phase = {"type": "blendphase", "weight": float(fraction), "phase1": phase,
+                 "phase2": {"type": "hg", "g": float(g)}}
     return {
         "type": "homogeneous",
         "sigma_t": irregular_spectrum(iops.wavelengths, iops.attenuation),
         "albedo": irregular_spectrum(iops.wavelengths, iops.single_scattering_albedo),
-        "phase": {"type": "rayleigh"},
+        "phase": phase,
         "scale": 1.0,
     }
 
