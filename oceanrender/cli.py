@@ -62,6 +62,15 @@ def build_parser() -> argparse.ArgumentParser:
     geometry.add_argument("--out", type=Path, metavar="DIR", required=True, help="export folder")
     geometry.add_argument("--ply", action="store_true", help="also write mesh_NNNN.ply per frame")
 
+    optics = commands.add_parser(
+        "optics", help="the water's IOPs and four-flux light field: CSV, JSON and plots",
+        description="Write a, b, b_b, c, K_d, R(0-) per wavelength (optics.csv), the irradiance profiles "
+                    "E_d(z), E_u(z) (lightfield.json) and plots (iops.png, lightfield.png) for the scene's "
+                    "water under its sun and sky.")
+    optics.add_argument("scene", type=Path, help="scene file (TOML)")
+    optics.add_argument("--out", type=Path, metavar="DIR", required=True, help="report folder")
+    optics.add_argument("--variant", metavar="V", help="Mitsuba variant for the sky irradiance ('auto' by default)")
+
     commands.add_parser("info", help="versions, usable Mitsuba variants and the LLVM library",
                         description="Report versions and probe which Mitsuba spectral variants work here.")
     return parser
@@ -188,7 +197,44 @@ def cmd_geometry(args: argparse.Namespace) -> int:
     return 0
 
 
-COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "info": cmd_info}
+def cmd_optics(args: argparse.Namespace) -> int:
+    import numpy as np  # noqa: PLC0415
+
+    scene = load_scene(args.scene)
+    check_resources(scene, str(args.scene))
+    runtime = activate(args.variant or scene.render.variant)
+    from .io.optics_report import write_optics_report  # noqa: PLC0415
+    from .optics.report import REPORT_WAVELENGTHS, scene_optics, sky_irradiance_spectra  # noqa: PLC0415
+    from .optics.water import pure_seawater_iops  # noqa: PLC0415
+    from .pipeline import water_composition  # noqa: PLC0415
+
+    wavelengths = REPORT_WAVELENGTHS
+    composition = water_composition(scene)
+    if composition is None:
+        iops = pure_seawater_iops(scene.water.iop_table)
+        a = np.interp(wavelengths, iops.wavelengths, iops.absorption)
+        b = np.interp(wavelengths, iops.wavelengths, iops.scattering)
+        bb = b / 2  # pure water's VSF is symmetric about 90° (Morel 1974)
+    else:
+        from .optics.components import composition_iops  # noqa: PLC0415
+
+        result = composition_iops(composition, wavelengths)
+        a, b, bb = result.absorption, result.scattering, result.backscattering
+    direct, diffuse = sky_irradiance_spectra(scene.sun, wavelengths, spp=scene.render.white_spp)
+    depth = scene.water.depth
+    z = np.linspace(0.0, min(depth, 100.0), 101)
+    report = scene_optics(a, b, bb, direct, diffuse, 90.0 - scene.sun.elevation, depth, z, n_water=scene.water.ior)
+    metadata = {"scene": scene.name, "variant": runtime.variant, "oceanrender_version": __version__,
+                "composition": None if composition is None else composition.__dict__,
+                "bottom": "none (albedo 0): the rendered water body ends in a transparent bottom"}
+    written = write_optics_report(args.out, report, metadata)
+    i = int(np.argmin(np.abs(wavelengths - 550.0)))
+    print(f"{scene.name}: a(550) {a[i]:.4g} m⁻¹, b(550) {b[i]:.4g} m⁻¹, K_d(550) {report.light.K_d[i]:.4g} m⁻¹, "
+          f"R(0⁻, 550) {report.light.R[i]:.4g}; wrote {', '.join(p.name for p in written)} to {args.out}")
+    return 0
+
+
+COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "optics": cmd_optics, "info": cmd_info}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -175,3 +175,21 @@ def test_cli_refuses_a_bad_composition(tmp_path, capsys):
     path.write_text("[composition]\nsoil_g_m3 = -1.0\n")
     assert main(["render", str(path)]) == 2
     assert "[composition] soil_g_m3" in capsys.readouterr().err
+
+
+def test_cli_optics_report(tmp_path, capsys):
+    import json
+
+    scene = tmp_path / "coastal.toml"
+    scene.write_text("[composition]\npreset = 'green coastal'\n[render]\nwhite_spp = 64\n")
+    assert main(["optics", str(scene), "--out", str(tmp_path / "o")]) == 0
+    out = tmp_path / "o"
+    table = np.loadtxt(out / "optics.csv", delimiter=",", comments="#")
+    assert table.shape == (95, 11)
+    wavelengths, reflectance = table[:, 0], table[:, 6]
+    visible = wavelengths <= 700
+    assert 500 <= wavelengths[visible][np.argmax(reflectance[visible])] <= 580  # green water reflects green
+    document = json.loads((out / "lightfield.json").read_text())
+    assert len(document["E_d"]) == 95 and len(document["z_m"]) == 101
+    assert (out / "iops.png").stat().st_size > 1000 and (out / "lightfield.png").stat().st_size > 1000
+    assert "K_d(550)" in capsys.readouterr().out
