@@ -293,6 +293,10 @@ def _bilinear_corners(grid: OceanGrid, x: NDArray, y: NDArray):
     return corners, weights
 
 
+#: Public name of the periodic bilinear stencil (used by :mod:`oceanrender.geometry.sea`).
+bilinear_corners = _bilinear_corners
+
+
 @dataclass(frozen=True, eq=False)
 class CascadeFrame:
     """The fields of every patch at one time, ready to be sampled anywhere.

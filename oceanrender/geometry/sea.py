@@ -18,7 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..config import OceanSettings
-from .cascades import CascadeOcean, SurfaceSample, _bilinear_corners, cascade_patch_sizes
+from .cascades import CascadeOcean, SurfaceSample, bilinear_corners, cascade_patch_sizes
 from .fractal import estimate_fbm_parameters, fractal_detail
 from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from_spectrum
 from .spectra import DirectionalSpectrum
@@ -211,7 +211,7 @@ class SeaSurface:
             weight = 1.0 if spacing is None else lod_weight(spacing, grid.spacing)
             if np.all(weight == 0):
                 continue
-            corners, weights = _bilinear_corners(grid, np.asarray(x, float), np.asarray(y, float))
+            corners, weights = bilinear_corners(grid, np.asarray(x, float), np.asarray(y, float))
             stack = frame.stacks[i][:, 5:8]  # J_xx − 1, J_yy − 1, J_xy
             part = sum(np.take(stack, c, axis=0) * w[..., None] for c, w in zip(corners, weights))
             xx += weight * part[..., 0]
