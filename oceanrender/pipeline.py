@@ -107,7 +107,8 @@ class Sequence:
     updates the water mesh.
     """
 
-    def __init__(self, scene: Scene, variant: str, spp: int | None = None, resolution: tuple[int, int] | None = None):
+    def __init__(self, scene: Scene, variant: str, spp: int | None = None, resolution: tuple[int, int] | None = None,
+                 first_frame: int | None = None):
         self.scene = scene
         self.variant = variant
         self.spp = int(spp or scene.output.spp)
@@ -115,7 +116,10 @@ class Sequence:
         self.body = WaterBody(scene)
         self.faces = self.body.faces
         self.iops = water_optics(scene)
-        first = self.geometry(scene.output.frames[0])
+        first_frame = scene.output.frames[0] if first_frame is None else first_frame
+        first = self.geometry(first_frame)
+        # NOTE: the scene is loaded with this frame's geometry; render_frame reuses it once.
+        self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self.roughness = surface_roughness(scene, self.body)
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
                                             spp=self.spp, resolution=self.resolution)
@@ -156,7 +160,11 @@ class Sequence:
     def render_frame(self, frame: int, paths: FramePaths, seconds: dict[str, float]) -> int:
         """Render, adapt and write one frame; returns the count of repaired pixels."""
         tic = time.perf_counter()
-        geometry = self.geometry(frame)
+        if self._loaded is not None and self._loaded[0] == frame:
+            geometry = self._loaded[1]
+        else:
+            geometry = self.geometry(frame)
+        self._loaded = None
         tac = time.perf_counter()
         seconds["geometry"] += tac - tic
         self.renderer.update_water(geometry)
@@ -211,7 +219,7 @@ def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tup
     if not todo:
         return report
     tic = time.perf_counter()
-    sequence = Sequence(scene, variant, spp=spp, resolution=size)
+    sequence = Sequence(scene, variant, spp=spp, resolution=size, first_frame=todo[0])
     report.setup_seconds = time.perf_counter() - tic
     for frame in todo:
         tic = time.perf_counter()
