@@ -71,6 +71,17 @@ def build_parser() -> argparse.ArgumentParser:
     optics.add_argument("--out", type=Path, metavar="DIR", required=True, help="report folder")
     optics.add_argument("--variant", metavar="V", help="Mitsuba variant for the sky irradiance ('auto' by default)")
 
+    coastal = commands.add_parser(
+        "coastal", help="run a scene's shallow-water simulation alone: per-frame fields as .npz and EXR",
+        description="Simulate the scene's [coastal] zone up to its last frame and write, per frame, "
+                    "OUT/frame_NNNN.npz (h, hu, hv, bed, t and the grid, float64) and OUT/frame_NNNN.exr "
+                    "(h, eta, u, v, bed, float32, with metadata); resumes from OUT/checkpoint.npz. "
+                    "`oceanrender render` runs the same simulation into OUT/<scene>/coastal/ by itself.")
+    coastal.add_argument("scene", type=Path, help="scene file (TOML) with a [coastal] section")
+    coastal.add_argument("--frames", type=_frame_range, metavar="A:B", help="half-open frame range (default: the scene's)")
+    coastal.add_argument("--out", type=Path, metavar="DIR", required=True, help="fields folder")
+    coastal.add_argument("--no-progress", action="store_true", help="no progress bar")
+
     commands.add_parser("info", help="versions, usable Mitsuba variants and the LLVM library",
                         description="Report versions and probe which Mitsuba spectral variants work here.")
     return parser
@@ -197,6 +208,36 @@ def cmd_geometry(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_coastal(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    if args.frames is not None:
+        scene = with_overrides(scene, "command line", output={"frames": args.frames})
+    if scene.coastal is None:
+        raise UserError(f"{args.scene}: [coastal]: the scene has no coastal section to simulate")
+    from tqdm import tqdm  # noqa: PLC0415
+
+    from .coastal.simulation import run_simulation  # noqa: PLC0415
+
+    start, end = scene.output.frames
+    c = scene.coastal
+    print(f"oceanrender {__version__}: {scene.name}, shallow water {c.cells[0]}x{c.cells[1]} cells, order {c.order}, "
+          f"frames {start}:{end} after {c.spinup:g} s spin-up -> {args.out}", flush=True)
+    bar = tqdm(total=1.0, unit="sim", disable=args.no_progress, dynamic_ncols=True,
+               bar_format="{l_bar}{bar}| {postfix}")
+
+    def on_progress(t: float, t_end: float) -> None:
+        bar.n = min(t / t_end, 1.0) if t_end > 0 else 1.0
+        bar.set_postfix_str(f"τ = {t:.2f} / {t_end:.2f} s")
+
+    with bar:
+        report = run_simulation(scene, args.out, on_progress=on_progress)
+    rate = report.cell_updates / report.seconds / 1e6 if report.seconds > 0 else 0.0
+    resumed = f", resumed at τ = {report.resumed_from:.2f} s" if report.resumed_from is not None else ""
+    print(f"simulated {len(report.simulated)} frame(s), {len(report.found)} already stored{resumed}, "
+          f"in {report.seconds:.1f} s ({rate:.1f} million cell-updates/s)")
+    return 0
+
+
 def cmd_optics(args: argparse.Namespace) -> int:
     import numpy as np  # noqa: PLC0415
 
@@ -234,7 +275,8 @@ def cmd_optics(args: argparse.Namespace) -> int:
     return 0
 
 
-COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "optics": cmd_optics, "info": cmd_info}
+COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "coastal": cmd_coastal, "optics": cmd_optics,
+            "info": cmd_info}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -67,8 +67,17 @@ def surface_roughness(scene: Scene, body: WaterBody) -> float:
     """Beckmann α of the water surface [-]: the scene's, or the slopes of the waves finer than the geometry."""
     if scene.water.surface_roughness != "auto":
         return float(scene.water.surface_roughness)
-    cutoff = np.pi / body.sea.finest_cell
-    return beckmann_alpha(unresolved_slope_variance(body.sea.spectrum, cutoff))
+    cutoff = np.pi / body.finest_cell
+    return beckmann_alpha(unresolved_slope_variance(body.spectrum, cutoff))
+
+
+def sun_lobe_alpha(scene: Scene, body, roughness: float) -> float:
+    """Beckmann roughness of the refracted-sun lobe [-]: the total rms slope of the water surface.
+
+    ``body.total_slope_variance(roughness)`` (resolved waves plus the
+    unresolved ones of Beckmann α ``roughness``), never below ``roughness``.
+    """
+    return float(max(beckmann_alpha(body.total_slope_variance(roughness)), roughness, 1e-3))
 
 
 def vision_for_scene(scene: Scene) -> VisionModel:
@@ -78,10 +87,28 @@ def vision_for_scene(scene: Scene) -> VisionModel:
                        display_max_luminance=v.display_luminance)
 
 
-def adaptation_luminance(scene: Scene, xyz: np.ndarray) -> float:
-    """World adaptation luminance [cd m⁻²]: fixed by the scene, or the frame's log-average."""
+#: Reflectance of the grey card of ``adaptation_luminance = "daylight"`` [-]: the mid-grey to which
+#: reflected-light meters are calibrated (ISO 2720:1974, K = 12.5 cd s m⁻² ISO⁻¹ ⇔ ≈ 18 %).
+GREY_CARD_REFLECTANCE = 0.18
+
+
+def adaptation_luminance(scene: Scene, xyz: np.ndarray, white_XYZ: np.ndarray | None = None) -> float:
+    """World adaptation luminance [cd m⁻²].
+
+    Fixed by the scene; ``"frame"``: the frame's log-average (Ward 1994);
+    ``"daylight"``: an 18 % grey card under the scene's sun and sky,
+    0.18 · Y_white (``white_XYZ``: the adapting white, a white Lambertian
+    plane's XYZ [cd m⁻²]) — the state of a viewer outdoors, whose field of
+    view holds sky and sunlit surroundings, not just the water in the frame.
+    """
     value = scene.vision.adaptation_luminance
-    return adaptation_luminance_log_average(xyz[..., 1]) if value == "frame" else float(value)
+    if value == "frame":
+        return adaptation_luminance_log_average(xyz[..., 1])
+    if value == "daylight":
+        if white_XYZ is None:
+            raise ValueError("adaptation_luminance = 'daylight' needs the adapting white's XYZ")
+        return GREY_CARD_REFLECTANCE * float(white_XYZ[1])
+    return float(value)
 
 
 @dataclass
@@ -93,6 +120,7 @@ class SequenceReport:
     skipped: list[int] = field(default_factory=list)
     repaired_pixels: int = 0
     setup_seconds: float = 0.0
+    simulation: object = None  # coastal scenes: the SimulationReport of the run
     stage_seconds: dict[str, float] = field(default_factory=lambda: {s: 0.0 for s in STAGES})
 
     @property
@@ -108,12 +136,19 @@ class Sequence:
     """
 
     def __init__(self, scene: Scene, variant: str, spp: int | None = None, resolution: tuple[int, int] | None = None,
-                 first_frame: int | None = None):
+                 first_frame: int | None = None, coastal_store: str | Path | None = None):
         self.scene = scene
         self.variant = variant
         self.spp = int(spp or scene.output.spp)
         self.resolution = tuple(resolution or scene.output.resolution)
-        self.body = WaterBody(scene)
+        if scene.coastal is not None:
+            if coastal_store is None:
+                raise ValueError("a coastal scene renders from its simulation's stored fields: give coastal_store")
+            from .coastal.body import CoastalBody  # noqa: PLC0415
+
+            self.body = CoastalBody(scene, coastal_store)
+        else:
+            self.body = WaterBody(scene)
         self.faces = self.body.faces
         self.iops = water_optics(scene)
         first_frame = scene.output.frames[0] if first_frame is None else first_frame
@@ -121,7 +156,9 @@ class Sequence:
         # NOTE: the scene is loaded with this frame's geometry; render_frame reuses it once.
         self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self.roughness = surface_roughness(scene, self.body)
+        self.sun_lobe_alpha = sun_lobe_alpha(scene, self.body, self.roughness)
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
+                                            sun_lobe_alpha=self.sun_lobe_alpha, extra_shapes=self.body.extra_shapes(),
                                             spp=self.spp, resolution=self.resolution)
         self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
         self.vision = vision_for_scene(scene)
@@ -153,6 +190,7 @@ class Sequence:
             "chromatic_transform": self.vision.chromatic_transform,
             "display_luminance_cd_m2": self.vision.display_max_luminance,
             "surface_roughness_beckmann_alpha": self.roughness,
+            "sun_lobe_beckmann_alpha": self.sun_lobe_alpha if self.scene.render.sun_sampling else 0.0,
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
@@ -173,7 +211,7 @@ class Sequence:
         xyz, repaired = self.renderer.render_xyz(self.spp, seed=self.scene.render.seed + frame)
         tac = time.perf_counter()
         seconds["render"] += tac - tic
-        adaptation = adaptation_luminance(self.scene, xyz)
+        adaptation = adaptation_luminance(self.scene, xyz, self.white_xyz)
         rgb = self.vision.apply(xyz, self.white_xyz, adaptation)
         rgb8 = encode_sRGB_8bit(rgb)
         tic = time.perf_counter()
@@ -192,6 +230,11 @@ def remove_stale_temporaries(out_dir: str | Path) -> list[Path]:
     for path in stale:
         path.unlink(missing_ok=True)
     return stale
+
+
+def coastal_store(out_dir: str | Path) -> Path:
+    """Where a coastal scene's simulation keeps its per-frame fields: ``<out_dir>/coastal``."""
+    return Path(out_dir) / "coastal"
 
 
 def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tuple[int, int] | None = None,
@@ -219,7 +262,13 @@ def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tup
     if not todo:
         return report
     tic = time.perf_counter()
-    sequence = Sequence(scene, variant, spp=spp, resolution=size, first_frame=todo[0])
+    store = None
+    if scene.coastal is not None:
+        from .coastal.simulation import run_simulation  # noqa: PLC0415
+
+        store = coastal_store(out_dir)
+        report.simulation = run_simulation(scene, store, (todo[0], todo[-1] + 1))
+    sequence = Sequence(scene, variant, spp=spp, resolution=size, first_frame=todo[0], coastal_store=store)
     report.setup_seconds = time.perf_counter() - tic
     for frame in todo:
         tic = time.perf_counter()

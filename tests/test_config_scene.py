@@ -42,7 +42,7 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[sun]\nelevation = 120\n", "[sun] elevation: Input should be less than or equal to 90"),
         ("[camera]\nposition = [0, 0, 1]\ntarget = [0, 0, 1]\n", "camera target must differ"),
         ("[vision]\nbrightness = 'Reinhard'\n", "[vision] brightness: Input should be 'Ward 1994' or 'Ferwerda 1996'"),
-        ("[vision]\nadaptation_luminance = -5.0\n", "[vision] adaptation_luminance: expected 'frame' or a luminance > 0"),
+        ("[vision]\nadaptation_luminance = -5.0\n", "[vision] adaptation_luminance: expected 'frame', 'daylight' or a luminance > 0"),
         ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or a spectral variant"),
         ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
         ("[ocean\n", "not valid TOML"),

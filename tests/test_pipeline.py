@@ -52,7 +52,8 @@ def test_per_frame_update_renders_like_a_fresh_load(variant):
     assert np.abs(later.positions - first.positions).max() > 0.01
     sequence.renderer.update_water(later)
     updated, _ = sequence.renderer.render_xyz(spp=4, seed=11)
-    fresh = WaterRenderer.build(scene, sequence.iops, sequence.faces, later, roughness=sequence.roughness, spp=4)
+    fresh = WaterRenderer.build(scene, sequence.iops, sequence.faces, later, roughness=sequence.roughness, spp=4,
+                                sun_lobe_alpha=sequence.sun_lobe_alpha)
     reloaded, _ = fresh.render_xyz(spp=4, seed=11)
     np.testing.assert_allclose(updated, reloaded, rtol=1e-4, atol=1e-3)
     # ...and it is not trivially equal to the frame-0 image.
@@ -193,3 +194,19 @@ def test_cli_optics_report(tmp_path, capsys):
     assert len(document["E_d"]) == 95 and len(document["z_m"]) == 101
     assert (out / "iops.png").stat().st_size > 1000 and (out / "lightfield.png").stat().st_size > 1000
     assert "K_d(550)" in capsys.readouterr().out
+
+
+def test_adaptation_luminance_modes():
+    from oceanrender.pipeline import GREY_CARD_REFLECTANCE, adaptation_luminance
+
+    xyz = np.ones((4, 4, 3)) * 50.0
+    white = np.array([9000.0, 10000.0, 11000.0])
+    frame = scene_from_dict({"name": "adaptation", "vision": {"adaptation_luminance": "frame"}})
+    daylight = scene_from_dict({"name": "adaptation", "vision": {"adaptation_luminance": "daylight"}})
+    fixed = scene_from_dict({"name": "adaptation", "vision": {"adaptation_luminance": 123.0}})
+    # The log-average of a uniform frame is its luminance (up to Ward's small δ).
+    assert adaptation_luminance(frame, xyz) == pytest.approx(50.0, rel=1e-3)
+    assert adaptation_luminance(daylight, xyz, white) == pytest.approx(GREY_CARD_REFLECTANCE * 10000.0)
+    assert adaptation_luminance(fixed, xyz, white) == 123.0
+    with pytest.raises(ValueError, match="daylight"):
+        adaptation_luminance(daylight, xyz)

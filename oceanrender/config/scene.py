@@ -57,6 +57,9 @@ class RenderSettings(_Section):
         "split", description="'split' follows both Fresnel lobes at the first water hit (less noise, 1.3x time)"
     )
     max_depth: int = Field(12, ge=2, le=1024, description="maximum path length [vertices]")
+    sun_sampling: bool = Field(
+        True, description="('split' only) sample the sunlight refracted into the water at every in-water vertex"
+    )
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")
 
@@ -223,8 +226,9 @@ class VisionSettings(_Section):
 
     brightness: Literal["Ward 1994", "Ferwerda 1996"] = "Ward 1994"
     chromatic_transform: Literal["Von Kries", "Bradford", "CAT02", "CAT16", "XYZ Scaling"] = "Von Kries"
-    adaptation_luminance: float | Literal["frame"] = Field(
-        "frame", description="world adaptation luminance [cd m⁻²], or 'frame' for each frame's log-average"
+    adaptation_luminance: float | Literal["frame", "daylight"] = Field(
+        "frame", description="world adaptation luminance [cd m⁻²], 'frame' for each frame's log-average, or "
+                             "'daylight' for an 18 % grey card under the scene's sun and sky"
     )
     display_luminance: float = Field(100.0, gt=0, le=10_000, description="display white luminance [cd m⁻²]")
 
@@ -232,8 +236,82 @@ class VisionSettings(_Section):
     @classmethod
     def _positive(cls, value: float | str) -> float | str:
         if not isinstance(value, str) and not value > 0:
-            raise ValueError(f"expected 'frame' or a luminance > 0 cd/m², got {value}")
+            raise ValueError(f"expected 'frame', 'daylight' or a luminance > 0 cd/m², got {value}")
         return value
+
+
+#: Array files accepted for bathymetry and the initial surface (rows = y south → north, columns = x).
+ARRAY_SUFFIXES = (".npy", ".exr")
+
+
+class CoastalSettings(_Section):
+    """Coastal zone: the 2D shallow-water equations over a bathymetry (``oceanrender.coastal``).
+
+    The grid has ``cells = [nx, ny]`` cells over ``size = [Lx, Ly]`` m with its
+    south-west corner at ``origin``. ``bathymetry = "plane beach"`` is a beach
+    rising towards the south: z_b = still_level − slope·(y − shoreline_y), no
+    deeper than ``offshore_depth`` (the sea is to the north); a path to a
+    ``.npy`` or ``.exr`` file (relative to the scene file; shape (ny, nx),
+    elevation in m) is read instead. Waves enter through ``offshore_side``.
+    """
+
+    size: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = Field(
+        (40.0, 30.0), description="domain extent along x and y [m]")
+    cells: tuple[Annotated[int, Field(ge=4, le=8192)], Annotated[int, Field(ge=4, le=8192)]] = Field(
+        (320, 240), description="cells along x and y [-]")
+    origin: tuple[float, float] = Field((-20.0, -6.0), description="world (x, y) of the grid's south-west corner [m]")
+    bathymetry: str = Field("plane beach", description="'plane beach', or a .npy/.exr file of bed elevation [m]")
+    still_level: float = Field(0.0, description="still-water level [m]")
+    shoreline_y: float = Field(0.0, description="('plane beach') y where the bed meets the still level [m]")
+    slope: float = Field(0.05, gt=0, le=1, description="('plane beach') rise of the bed per metre towards the shore [-]")
+    offshore_depth: float = Field(2.0, gt=0, description="('plane beach') greatest still-water depth [m]")
+    initial_surface: str = Field("still", description="'still', or a .npy/.exr file of the surface elevation η [m]")
+    waves: Literal["train", "spectrum", "none"] = Field(
+        "train", description="incident waves: a monochromatic 'train', components of the [ocean] 'spectrum', or 'none'")
+    wave_height: float = Field(0.3, ge=0, le=10, description="('train') crest-to-trough height [m]")
+    wave_period: float = Field(5.0, gt=0, le=30, description="('train') period [s]")
+    wave_direction: float = Field(-90.0, ge=-360, le=360,
+                                  description="('train') direction of travel, counter-clockwise from +x [deg]")
+    wave_count: int = Field(32, ge=1, le=1024, description="('spectrum') number of components")
+    offshore_side: Literal["north", "south", "east", "west"] = Field("north", description="side the waves enter")
+    lateral: Literal["wall", "transmissive"] = Field("transmissive", description="the two sides beside the offshore one")
+    order: Literal[1, 2] = Field(2, description="1: first-order scheme; 2: second order")
+    cfl: float = Field(0.4, gt=0, le=1, description="Courant number [-]; ≤ 1 at first order, ≤ 0.5 at second")
+    h_min: float = Field(0.002, ge=0, le=1, description="dry threshold: cells with depth ≤ h_min are land [m]")
+    manning: float = Field(0.02, ge=0, le=1, description="Manning friction coefficient [s m^-1/3]")
+    spinup: float = Field(20.0, ge=0, le=1e5, description="simulated time before frame 0 [s]")
+    checkpoint_interval: float = Field(10.0, gt=0, description="simulated time between checkpoints [s]")
+    sand_albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)]] = Field(
+        (0.25, 0.45), description="sand reflectance at 400 and 700 nm (linear in between) [-]")
+    rock_albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)]] = Field(
+        (0.06, 0.10), description="rock reflectance at 400 and 700 nm [-]")
+    rock_cover: float = Field(0.15, ge=0, le=1, description="fraction of the seafloor that is rock [-]")
+    seed: int = Field(3, ge=0, description="seed of the rock pattern and of the spectral wave phases")
+
+    @field_validator("cfl")
+    @classmethod
+    def _cfl_bound(cls, value: float, info) -> float:
+        if info.data.get("order") == 2 and value > 0.5:
+            raise ValueError(f"must be ≤ 0.5 at order 2 (the scheme's positivity bound), got {value}")
+        return value
+
+    @field_validator("bathymetry", "initial_surface")
+    @classmethod
+    def _source(cls, value: str, info) -> str:
+        word = "plane beach" if info.field_name == "bathymetry" else "still"
+        if value != word and not value.lower().endswith(ARRAY_SUFFIXES):
+            raise ValueError(f"expected {word!r} or a {'/'.join(ARRAY_SUFFIXES)} file, got {value!r}")
+        return value
+
+    @property
+    def spacing(self) -> tuple[float, float]:
+        """Cell size (dx, dy) [m]."""
+        return self.size[0] / self.cells[0], self.size[1] / self.cells[1]
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """Array shape (ny, nx) of the fields."""
+        return self.cells[1], self.cells[0]
 
 
 class Scene(_Section):
@@ -247,6 +325,7 @@ class Scene(_Section):
     foam: FoamSettings = FoamSettings()
     water: WaterSettings = WaterSettings()
     composition: CompositionSettings | None = None
+    coastal: CoastalSettings | None = None
     sun: SunSettings = SunSettings()
     camera: CameraSettings = CameraSettings()
     vision: VisionSettings = VisionSettings()
@@ -328,7 +407,28 @@ def load_scene(path: str | Path) -> Scene:
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"{path}: not valid TOML: {exc}") from None
     data.setdefault("name", path.stem)
-    return scene_from_dict(data, str(path))
+    coastal = data.get("coastal")
+    if isinstance(coastal, dict):
+        # Array files are named relative to the scene file.
+        for key in ("bathymetry", "initial_surface"):
+            value = coastal.get(key)
+            if isinstance(value, str) and value.lower().endswith(ARRAY_SUFFIXES):
+                coastal[key] = str((path.parent / value).resolve())
+    scene = scene_from_dict(data, str(path))
+    check_scene_inputs(scene, str(path))
+    return scene
+
+
+def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
+    """Read and check the data files a scene names (coastal arrays); SceneError naming the key."""
+    if scene.coastal is None:
+        return
+    from ..coastal.inputs import check_coastal_inputs  # noqa: PLC0415
+
+    try:
+        check_coastal_inputs(scene.coastal)
+    except ValueError as exc:
+        raise SceneError(f"{source}: [coastal] {exc}") from None
 
 
 def with_overrides(scene: Scene, source: str = "command line", **sections: dict) -> Scene:

@@ -19,6 +19,7 @@ from .fft_ocean import OceanFields, OceanGrid
 from .foam import foam_step
 from .mesh import water_body_faces, water_body_vertices
 from .radial_mesh import RadialGrid, radial_body_faces, radial_body_vertices
+from .roughness import unresolved_slope_variance
 from .sea import SeaSurface, SurfacePoints
 
 
@@ -61,6 +62,28 @@ class WaterBody:
             self.rest_x, self.rest_y = grid.x, grid.y
             self.spacing = None
         self.vertex_count = int(self.faces.max()) + 1
+
+    @property
+    def spectrum(self):
+        """The directional wave spectrum Ψ(kx, ky) [m⁴] of the sea."""
+        return self.sea.spectrum
+
+    @property
+    def finest_cell(self) -> float:
+        """Finest resolved grid spacing of the geometry [m]."""
+        return self.sea.finest_cell
+
+    def total_slope_variance(self, roughness: float) -> float:
+        """Mean-square slope of all the sea's waves [-]: the spectrum's, from waves 10 patches long to 1 mm.
+
+        (``roughness`` is the part already in that integral.)
+        """
+        k_min = 2.0 * np.pi / (10.0 * self.scene.ocean.patch_size)
+        return unresolved_slope_variance(self.spectrum, k_min)
+
+    def extra_shapes(self) -> dict:
+        """Other Mitsuba shapes of the scene (none for the open sea)."""
+        return {}
 
     def surface(self, t: float) -> SurfacePoints:
         """The displaced surface at the mesh's rest points at time t [s]."""

@@ -35,6 +35,7 @@ __all__ = [
     "water_body_vertex_count",
     "water_body_face_count",
     "water_body_faces",
+    "heightfield_body_faces",
     "water_body_vertices",
     "signed_volume",
 ]
@@ -50,12 +51,44 @@ def water_body_face_count(n: int) -> int:
     return 2 * n * n + 12 * n
 
 
-def _border_ring(n: int) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
-    """Top-grid (iy, ix) of the 4n border vertices, counter-clockwise seen from +z."""
-    up, down = np.arange(n), np.arange(n, 0, -1)
-    iy = np.concatenate([np.zeros(n, int), up, np.full(n, n), down])  # south, east, north, west
-    ix = np.concatenate([up, np.full(n, n), down, np.zeros(n, int)])
+def _border_ring(n: int, nx: int | None = None) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Top-grid (iy, ix) of the 2(n + nx) border vertices of an n × nx-cell grid, counter-clockwise from +z."""
+    ny, nx = n, n if nx is None else nx
+    east, north = np.arange(nx), np.arange(ny)
+    iy = np.concatenate([np.zeros(nx, int), north, np.full(nx, ny), north[::-1] + 1])  # south, east, north, west
+    ix = np.concatenate([east, np.full(ny, nx), east[::-1] + 1, np.zeros(ny, int)])
     return iy, ix
+
+
+def heightfield_body_faces(ny: int, nx: int) -> NDArray[np.uint32]:
+    """Triangles of a closed body over an ny × nx-cell heightfield, shape (2 ny nx + 6(ny + nx), 3).
+
+    Vertex layout: the (ny + 1) × (nx + 1) top grid row-major ``[iy, ix]``
+    (x east along ix, y north along iy), then the bottom ring of 2(ny + nx)
+    vertices below the top border (counter-clockwise from +z, starting at the
+    south-west corner), then the bottom centre. Every triangle is
+    counter-clockwise seen from outside.
+    """
+    if int(ny) != ny or int(nx) != nx or ny < 1 or nx < 1:
+        raise ValueError(f"ny and nx must be positive integers, got {ny!r}, {nx!r}")
+    stride = nx + 1
+    iy, ix = np.meshgrid(np.arange(ny), np.arange(nx), indexing="ij")
+    v00 = (iy * stride + ix).ravel()
+    v10, v01 = v00 + 1, v00 + stride  # east and north neighbours
+    v11 = v01 + 1
+    top = np.concatenate([np.stack([v00, v10, v11], 1), np.stack([v00, v11, v01], 1)])
+
+    ring_iy, ring_ix = _border_ring(ny, nx)
+    count = len(ring_iy)
+    t0 = ring_iy * stride + ring_ix  # top border vertex r
+    t1 = np.roll(t0, -1)  # top border vertex r + 1
+    b0 = (ny + 1) * stride + np.arange(count)  # bottom ring vertex r
+    b1 = np.roll(b0, -1)
+    centre = (ny + 1) * stride + count
+    # the ring runs counter-clockwise, so the outside is on its right
+    sides = np.concatenate([np.stack([b0, b1, t1], 1), np.stack([b0, t1, t0], 1)])
+    bottom = np.stack([np.full(count, centre), b1, b0], 1)  # normal −z
+    return np.concatenate([top, sides, bottom]).astype(np.uint32)
 
 
 def water_body_faces(n: int) -> NDArray[np.uint32]:
@@ -74,23 +107,7 @@ def water_body_faces(n: int) -> NDArray[np.uint32]:
     """
     if int(n) != n or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
-    stride = n + 1
-    iy, ix = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
-    v00 = (iy * stride + ix).ravel()
-    v10, v01 = v00 + 1, v00 + stride  # east and north neighbours
-    v11 = v01 + 1
-    top = np.concatenate([np.stack([v00, v10, v11], 1), np.stack([v00, v11, v01], 1)])
-
-    ring_iy, ring_ix = _border_ring(n)
-    t0 = ring_iy * stride + ring_ix  # top border vertex r
-    t1 = np.roll(t0, -1)  # top border vertex r + 1
-    b0 = stride * stride + np.arange(4 * n)  # bottom ring vertex r
-    b1 = np.roll(b0, -1)
-    centre = stride * stride + 4 * n
-    # the ring runs counter-clockwise, so the outside is on its right
-    sides = np.concatenate([np.stack([b0, b1, t1], 1), np.stack([b0, t1, t0], 1)])
-    bottom = np.stack([np.full(4 * n, centre), b1, b0], 1)  # normal −z
-    return np.concatenate([top, sides, bottom]).astype(np.uint32)
+    return heightfield_body_faces(n, n)
 
 
 def water_body_vertices(

@@ -49,13 +49,20 @@ _REGISTERED: set[str] = set()
 _CLASSES: dict[str, type] = {}
 
 
-def split_integrator(max_depth: int, rr_depth: int = 5) -> dict:
+def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: float = 1.333,
+                     sun_lobe_alpha: float = 0.2) -> dict:
     """Scene-dict entry of the split-surface integrator.
 
     Parameters
     ----------
-    max_depth : int   Longest path, as in ``volpath`` (−1: unbounded) [-].
-    rr_depth : int    Depth after which Russian roulette starts, as in ``volpath`` [-].
+    max_depth : int          Longest path, as in ``volpath`` (−1: unbounded) [-].
+    rr_depth : int           Depth after which Russian roulette starts, as in ``volpath`` [-].
+    sun : sequence, optional Unit vector towards the sun (z up). Given, the transmitted lobe is
+                             traced by :func:`oceanrender.render.underwater.trace_in_water`, which
+                             samples the sunlight refracted into the water explicitly.
+    water_ior : float        Refractive index of the water relative to air [-].
+    sun_lobe_alpha : float   Beckmann roughness of the refracted-sun lobe: the total rms slope
+                             of the sea surface [-].
 
     Call :func:`register` (after the variant is set) before loading the scene.
     """
@@ -63,7 +70,13 @@ def split_integrator(max_depth: int, rr_depth: int = 5) -> dict:
         raise ValueError(f"max_depth must be -1 (unbounded) or ≥ 0, got {max_depth}")
     if rr_depth < 1:
         raise ValueError(f"rr_depth must be ≥ 1, got {rr_depth}")
-    return {"type": SPLIT_INTEGRATOR, "max_depth": int(max_depth), "rr_depth": int(rr_depth)}
+    entry = {"type": SPLIT_INTEGRATOR, "max_depth": int(max_depth), "rr_depth": int(rr_depth)}
+    if sun is not None:
+        if not (water_ior > 1.0 and 0.0 < sun_lobe_alpha <= 1.0):
+            raise ValueError(f"need water_ior > 1 and 0 < sun_lobe_alpha ≤ 1, got {water_ior}, {sun_lobe_alpha}")
+        entry.update({"sun_x": float(sun[0]), "sun_y": float(sun[1]), "sun_z": float(sun[2]),
+                      "water_ior": float(water_ior), "sun_lobe_alpha": float(sun_lobe_alpha)})
+    return entry
 
 
 def register() -> None:
@@ -161,6 +174,11 @@ def _define_class() -> type:
                 raise ValueError(f"rr_depth must be ≥ 1, got {self.rr_depth}")
             # A split needs a bounce after the first vertex: max_depth ≥ 2 (or unbounded).
             self.splits = self.max_depth < 0 or self.max_depth >= 2
+            self.sun = None
+            if "sun_z" in props:
+                self.sun = (float(props["sun_x"]), float(props["sun_y"]), float(props["sun_z"]))
+                self.water_ior = float(props.get("water_ior", 1.333))
+                self.sun_lobe_alpha = float(props.get("sun_lobe_alpha", 0.2))
             hide = bool(self.hide_emitters)  # NOTE: a bool attribute in Python, not a method
             self.full = self._volpath(self.max_depth, self.rr_depth, hide)
             self.reflected = self.transmitted = None
@@ -183,6 +201,24 @@ def _define_class() -> type:
             props["rr_depth"] = int(rr_depth)
             props["hide_emitters"] = bool(hide_emitters)
             return mi.PluginManager.instance().create_object(props)
+
+        def _in_water(self, scene, sampler, ray, medium, active, bsdfs):
+            """Radiance of a transmitted ray in ``medium``: in-water sun sampling, then volpath outside."""
+            from .underwater import escaped_radiance, trace_in_water  # noqa: PLC0415
+
+            def is_water_surface(ptr):
+                on = mi.Bool(False)
+                for b in bsdfs:
+                    on |= same_object(ptr, b, mi.BSDFPtr)
+                return on
+
+            depth = 1 << 20 if self.max_depth < 0 else self.max_depth - 1
+            L, escape = trace_in_water(scene, sampler, mi.Ray3f(ray), medium, active,
+                                       is_water_surface=is_water_surface, sun=self.sun, eta=self.water_ior,
+                                       alpha=self.sun_lobe_alpha, max_depth=depth,
+                                       rr_depth=max(self.rr_depth - 1, 1))
+            L += escaped_radiance(scene, sampler, self.reflected, escape)
+            return dr.select(active, L, 0.0)
 
         def to_string(self):
             return f"SplitSurfaceIntegrator[max_depth={self.max_depth}, rr_depth={self.rr_depth}]"
@@ -287,7 +323,10 @@ def _define_class() -> type:
                 # lanes are grouped by the medium they enter.
                 for m in media:
                     enters = act_t & same_object(target, m, mi.MediumPtr)
-                    L_t += dr.select(enters, transmitted.sample(scene, sampler, ray_t, m, enters)[0], 0.0)
+                    if m is not None and self.sun is not None:
+                        L_t += self._in_water(scene, sampler, ray_t, m, enters, bsdfs)
+                    else:
+                        L_t += dr.select(enters, transmitted.sample(scene, sampler, ray_t, m, enters)[0], 0.0)
             elif act_t:
                 L_t = transmitted.sample(scene, sampler, ray_t, target, act_t)[0]
             result += dr.select(act_t, weight_t * L_t, 0.0)

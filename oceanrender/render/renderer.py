@@ -14,7 +14,10 @@ from ..config import Scene
 from ..geometry.body import FrameGeometry
 from ..optics.water import MediumOptics, WaterIOPs
 from .scene import (
+    FILM_RANGE_NM,
+    irregular_spectrum,
     perspective_sensor,
+    sun_direction,
     sunsky_emitter,
     volumetric_integrator,
     water_medium,
@@ -86,6 +89,45 @@ def _water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: 
     return mesh
 
 
+#: Name of the per-vertex rock coverage attribute of the terrain mesh.
+ROCK_ATTRIBUTE = "vertex_rock"
+
+
+def linear_albedo_spectrum(at_400_700: tuple[float, float]) -> dict:
+    """An ``irregular`` reflectance spectrum over the film's range, linear through its 400 and 700 nm values."""
+    from ..coastal.body import linear_reflectance  # noqa: PLC0415
+
+    wavelengths = np.array([FILM_RANGE_NM[0], 400.0, 700.0, FILM_RANGE_NM[1]])
+    return irregular_spectrum(wavelengths, linear_reflectance(wavelengths, at_400_700))
+
+
+def terrain_shape(positions: np.ndarray, faces: np.ndarray, normals: np.ndarray, rock: np.ndarray,
+                  sand_albedo: tuple[float, float], rock_albedo: tuple[float, float]):
+    """The seafloor and beach as a Mitsuba mesh: Lambertian sand blended with rock by per-vertex coverage.
+
+    It has no medium of its own: inside the water body, rays that reach it
+    stay in the water. Reflectances [-] are linear in wavelength through their
+    400 and 700 nm values.
+    """
+    import mitsuba as mi  # noqa: PLC0415
+
+    props = mi.Properties()
+    props["bsdf"] = mi.load_dict({
+        "type": "blendbsdf",
+        "weight": {"type": "mesh_attribute", "name": ROCK_ATTRIBUTE},
+        "bsdf_0": {"type": "diffuse", "reflectance": linear_albedo_spectrum(sand_albedo)},
+        "bsdf_1": {"type": "diffuse", "reflectance": linear_albedo_spectrum(rock_albedo)},
+    })
+    mesh = mi.Mesh("terrain", len(positions), len(faces), props, has_vertex_normals=True)
+    mesh.add_attribute(ROCK_ATTRIBUTE, 1, _floats(rock))
+    params = mi.traverse(mesh)
+    params["vertex_positions"] = _floats(positions)
+    params["vertex_normals"] = _floats(normals)
+    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
+    params.update()
+    return mesh
+
+
 def foamy_surface_bsdf(surface: dict, albedo: float) -> dict:
     """Blend of the water surface and a white diffuse foam layer, weighted per vertex by foam coverage.
 
@@ -115,10 +157,14 @@ class WaterRenderer:
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
-              roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None) -> "WaterRenderer":
+              roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None,
+              sun_lobe_alpha: float | None = None, extra_shapes: dict | None = None) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
-        ``roughness`` is the Beckmann α of the water surface [-].
+        ``roughness`` is the Beckmann α of the water surface [-];
+        ``sun_lobe_alpha`` the total rms slope of the surface [-], which turns
+        on the in-water sun sampling of the ``split`` integrator (when the
+        scene's ``render.sun_sampling`` allows it).
         """
         import mitsuba as mi  # noqa: PLC0415
 
@@ -127,12 +173,17 @@ class WaterRenderer:
         if geometry.foam is not None:
             bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
         mesh = _water_mesh(faces, geometry, bsdf, water_medium(iops))
+        sun_sampling = {}
+        if settings.render.sun_sampling and sun_lobe_alpha is not None:
+            sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
+                            "water_ior": settings.water.ior, "sun_lobe_alpha": float(sun_lobe_alpha)}
         scene = mi.load_dict({
             "type": "scene",
-            "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth),
+            "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth, **sun_sampling),
             "sensor": perspective_sensor(settings.camera, xyz_film(width, height), spp or settings.output.spp),
             "sky": sunsky_emitter(settings.sun),
             WATER_ID: mesh,
+            **(extra_shapes or {}),
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height))
 

@@ -172,16 +172,21 @@ def water_surface_bsdf(ior: float, alpha: float) -> dict:
             "int_ior": float(ior), "ext_ior": 1.0}
 
 
-def volumetric_integrator(kind: str, max_depth: int) -> dict:
+def volumetric_integrator(kind: str, max_depth: int, sun=None, water_ior: float = 1.333,
+                          sun_lobe_alpha: float = 0.2) -> dict:
     """``volpath``, ``volpathmis`` or ``split`` with Russian roulette after 5 bounces.
 
     ``split`` is :class:`oceanrender.render.integrator.SplitSurfaceIntegrator`:
     volpath that follows both Fresnel lobes at the camera's first water hit
-    (registered here on first use).
+    (registered here on first use). Given ``sun`` (unit vector towards it), it
+    also samples the sunlight refracted into the water at every in-water vertex
+    (:mod:`oceanrender.render.underwater`; ``water_ior`` [-], ``sun_lobe_alpha``
+    the total rms slope of the surface [-]).
     """
     if kind == "split":
         from .integrator import register, split_integrator  # noqa: PLC0415
 
         register()
-        return split_integrator(int(max_depth), rr_depth=5)
+        return split_integrator(int(max_depth), rr_depth=5, sun=sun, water_ior=water_ior,
+                                sun_lobe_alpha=sun_lobe_alpha)
     return {"type": kind, "max_depth": int(max_depth), "rr_depth": 5}
