@@ -251,7 +251,11 @@ def cmd_optics(args: argparse.Namespace) -> int:
 
     wavelengths = REPORT_WAVELENGTHS
     composition = water_composition(scene)
-    if composition is None:
+    if scene.water.jerlov_type is not None:
+        from .optics.jerlov_types import iops_WilliamsonHollins2022  # noqa: PLC0415
+
+        a, b, bb = iops_WilliamsonHollins2022(scene.water.jerlov_type, wavelengths)
+    elif composition is None:
         iops = pure_seawater_iops(scene.water.iop_table)
         a = np.interp(wavelengths, iops.wavelengths, iops.absorption)
         b = np.interp(wavelengths, iops.wavelengths, iops.scattering)
@@ -267,6 +271,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     report = scene_optics(a, b, bb, direct, diffuse, 90.0 - scene.sun.elevation, depth, z, n_water=scene.water.ior)
     metadata = {"scene": scene.name, "variant": runtime.variant, "oceanrender_version": __version__,
                 "composition": None if composition is None else composition.__dict__,
+                "jerlov_type": scene.water.jerlov_type,
                 "bottom": "none (albedo 0): the rendered water body ends in a transparent bottom"}
     written = write_optics_report(args.out, report, metadata)
     i = int(np.argmin(np.abs(wavelengths - 550.0)))

@@ -56,7 +56,11 @@ def water_composition(scene: Scene):
 
 
 def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
-    """What the medium is made of: pure sea water from its table, or the ``[composition]``."""
+    """What the medium is made of: pure sea water from its table, a Jerlov type, or the ``[composition]``."""
+    if scene.water.jerlov_type is not None:
+        from .optics.jerlov_types import jerlov_type_optics  # noqa: PLC0415
+
+        return jerlov_type_optics(scene.water.jerlov_type)
     composition = water_composition(scene)
     if composition is None:
         return pure_seawater_iops(scene.water.iop_table)

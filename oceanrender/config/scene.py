@@ -166,6 +166,8 @@ class WaterSettings(_Section):
     depth: float = Field(50.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]")
     ior: float = Field(1.333, ge=1.0, le=2.0, description="refractive index of water [-]")
     iop_table: str = Field("pure_seawater.csv", min_length=1, description="table of a, b [m⁻¹] in spectra/")
+    jerlov_type: Literal["IB", "II", "III", "1C", "3C", "5C"] | None = Field(
+        None, description="a Jerlov water type's measured IOPs (Williamson & Hollins 2022) instead of the table")
     surface_roughness: float | Literal["auto"] = Field(
         "auto", description="Beckmann α of the surface [-], or 'auto' for the slopes of the waves finer than the mesh"
     )
@@ -329,6 +331,14 @@ class Scene(_Section):
     sun: SunSettings = SunSettings()
     camera: CameraSettings = CameraSettings()
     vision: VisionSettings = VisionSettings()
+
+    @field_validator("composition")
+    @classmethod
+    def _one_water(cls, value, info):
+        water = info.data.get("water")
+        if value is not None and water is not None and water.jerlov_type is not None:
+            raise ValueError("give either [composition] or [water] jerlov_type, not both")
+        return value
 
 
 def _key_path(location: tuple) -> str:

@@ -1,0 +1,392 @@
+"""Closed-form solutions of the one-dimensional shallow-water equations, for validating the solver.
+
+Flat, frictionless bed, depth h [m] and velocity u [m s⁻¹] along x, gravity g:
+
+* :func:`dam_break_ritter` — dam break onto a dry bed (Ritter 1892 [1]);
+* :func:`dam_break_stoker` — dam break onto a wet bed, a rarefaction and a bore
+  (Stoker 1957 [2]), with :func:`stoker_middle_state` for the state between them;
+* :func:`bore_jump` — Rankine–Hugoniot jump relations of a bore (hydraulic jump)
+  running into a given state [2, 3];
+* :func:`wall_reflection` — the bore reflected when a uniform stream hits a wall;
+* :func:`simple_wave` — a smooth Gaussian hump running into still water as a simple
+  wave, exact until it breaks (:func:`simple_wave_breaking_time`) [2], [4]: the smooth
+  test on which second order shows.
+
+All functions are pure and vectorised over x; t in s, positions in m.
+
+References
+----------
+.. [1] A. Ritter, "Die Fortpflanzung der Wasserwellen", Zeitschrift des Vereines
+   Deutscher Ingenieure 36(33), 947–954, 1892.
+.. [2] J. J. Stoker, "Water Waves: The Mathematical Theory with Applications",
+   Interscience, New York, 1957, ch. 10 (dam break, bores).
+.. [3] O. Delestre, C. Lucas, P.-A. Ksinant, F. Darboux, C. Laguerre, T.-N.-T. Vo,
+   F. James and S. Cordier, "SWASHES: a compilation of shallow water analytic
+   solutions for hydraulic and environmental studies", Int. J. Numer. Meth. Fluids
+   72(3), 269–300, 2013, doi:10.1002/fld.3741 (sections 4.1.1–4.1.2: the same dam
+   breaks, in the notation used here).
+.. [4] G. B. Whitham, "Linear and Nonlinear Waves", Wiley, New York, 1974,
+   sect. 13.10 (simple waves of the shallow-water equations).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
+
+__all__ = [
+    "G",
+    "dam_break_ritter",
+    "stoker_middle_state",
+    "dam_break_stoker",
+    "BoreJump",
+    "bore_jump",
+    "wall_reflection",
+    "simple_wave",
+    "simple_wave_breaking_time",
+]
+
+G: float = 9.81
+"""Default gravitational acceleration [m s⁻²] (same as :data:`oceanrender.coastal.swe.G`)."""
+
+
+def _check_positive(name: str, value: float) -> float:
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"{name} must be a finite number > 0; got {value}")
+    return value
+
+
+def dam_break_ritter(
+    x: ArrayLike, t: float, h_left: float, x0: float = 0.0, g: float = G
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Ritter's dam break onto a dry bed: depth and velocity at time t.
+
+    Parameters
+    ----------
+    x : array_like
+        Positions [m].
+    t : float
+        Time since the dam vanished [s], ≥ 0.
+    h_left : float
+        Initial depth behind the dam (x < x0) [m]; dry ahead of it.
+    x0 : float, optional
+        Position of the dam [m].
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    h, u : ndarray
+        Depth [m] and velocity [m s⁻¹] at x (u = 0 where h = 0).
+
+    Notes
+    -----
+    With c0 = √(g h_left) and ξ = (x − x0)/t [1], [3]:
+    h = h_left, u = 0 for ξ ≤ −c0; h = (2c0 − ξ)²/(9g), u = 2(c0 + ξ)/3 for
+    −c0 < ξ < 2c0; h = 0 beyond the front ξ = 2c0.
+    """
+    x = np.asarray(x, dtype=np.float64)
+    h_left = _check_positive("h_left", h_left)
+    c0 = math.sqrt(g * h_left)
+    if t <= 0:
+        h = np.where(x < x0, h_left, 0.0)
+        return h, np.zeros_like(h)
+    xi = (x - x0) / t
+    fan = (xi > -c0) & (xi < 2.0 * c0)
+    h = np.where(xi <= -c0, h_left, 0.0)
+    h = np.where(fan, (2.0 * c0 - xi) ** 2 / (9.0 * g), h)  # Ritter's parabola [1]
+    u = np.where(fan, 2.0 / 3.0 * (c0 + xi), 0.0)
+    return h, u
+
+
+def stoker_middle_state(h_left: float, h_right: float, g: float = G) -> tuple[float, float, float]:
+    """State between the rarefaction and the bore of Stoker's wet-bed dam break.
+
+    Parameters
+    ----------
+    h_left, h_right : float
+        Initial depths behind and ahead of the dam [m], h_left > h_right > 0.
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    h_m : float
+        Depth of the middle state [m].
+    u_m : float
+        Its velocity [m s⁻¹].
+    speed : float
+        Speed of the bore [m s⁻¹].
+
+    Notes
+    -----
+    h_m solves u_m = 2(√(g h_left) − √(g h_m)) (across the rarefaction) =
+    (h_m − h_right) √(g (h_m + h_right)/(2 h_m h_right)) (across the bore) [2], [3];
+    the bore speed follows from mass conservation, s = h_m u_m/(h_m − h_right).
+    """
+    h_left = _check_positive("h_left", h_left)
+    h_right = _check_positive("h_right", h_right)
+    if not h_right < h_left:
+        raise ValueError(f"stoker_middle_state needs h_left > h_right; got {h_left} and {h_right}")
+
+    def mismatch(hm: float) -> float:
+        rarefaction = 2.0 * (math.sqrt(g * h_left) - math.sqrt(g * hm))
+        bore = (hm - h_right) * math.sqrt(g * (hm + h_right) / (2.0 * hm * h_right))
+        return rarefaction - bore
+
+    h_m = brentq(mismatch, h_right, h_left, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+    u_m = 2.0 * (math.sqrt(g * h_left) - math.sqrt(g * h_m))
+    return h_m, u_m, h_m * u_m / (h_m - h_right)
+
+
+def dam_break_stoker(
+    x: ArrayLike, t: float, h_left: float, h_right: float, x0: float = 0.0, g: float = G
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Stoker's dam break onto a wet bed: depth and velocity at time t.
+
+    Parameters
+    ----------
+    x : array_like
+        Positions [m].
+    t : float
+        Time since the dam vanished [s], ≥ 0.
+    h_left, h_right : float
+        Initial depths behind (x < x0) and ahead of the dam [m], h_left > h_right ≥ 0
+        (h_right = 0 is Ritter's solution).
+    x0 : float, optional
+        Position of the dam [m].
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    h, u : ndarray
+        Depth [m] and velocity [m s⁻¹] at x.
+
+    Notes
+    -----
+    Left state | rarefaction −c0 < ξ < u_m − c_m | middle state (h_m, u_m) | bore at
+    ξ = s | right state, with ξ = (x − x0)/t, c = √(g h) and (h_m, u_m, s) from
+    :func:`stoker_middle_state` [2], [3].
+    """
+    if h_right == 0:
+        return dam_break_ritter(x, t, h_left, x0, g)
+    x = np.asarray(x, dtype=np.float64)
+    h_m, u_m, speed = stoker_middle_state(h_left, h_right, g)
+    if t <= 0:
+        h = np.where(x < x0, h_left, h_right)
+        return h, np.zeros_like(h)
+    c0 = math.sqrt(g * h_left)
+    cm = math.sqrt(g * h_m)
+    xi = (x - x0) / t
+    h = np.full(x.shape, h_right)
+    u = np.zeros(x.shape)
+    fan = (xi > -c0) & (xi < u_m - cm)
+    middle = (xi >= u_m - cm) & (xi < speed)
+    h = np.where(xi <= -c0, h_left, h)
+    h = np.where(fan, (2.0 * c0 - xi) ** 2 / (9.0 * g), h)  # centred rarefaction [2]
+    u = np.where(fan, 2.0 / 3.0 * (c0 + xi), u)
+    h = np.where(middle, h_m, h)
+    u = np.where(middle, u_m, u)
+    return h, u
+
+
+@dataclass(frozen=True)
+class BoreJump:
+    """A bore (moving hydraulic jump) and the states on its two sides.
+
+    Attributes
+    ----------
+    speed : float
+        Bore speed along +x [m s⁻¹].
+    h_ahead, u_ahead : float
+        State the bore runs into [m], [m s⁻¹].
+    h_behind, u_behind : float
+        State behind the bore [m], [m s⁻¹].
+    froude : float
+        Froude number of the inflow relative to the bore, (s − u_ahead)/√(g h_ahead) [-].
+    head_loss : float
+        Energy head dissipated in the bore, (h_behind − h_ahead)³/(4 h_ahead h_behind) [m].
+    """
+
+    speed: float
+    h_ahead: float
+    u_ahead: float
+    h_behind: float
+    u_behind: float
+    froude: float
+    head_loss: float
+
+
+def bore_jump(h_ahead: float, u_ahead: float, h_behind: float, g: float = G) -> BoreJump:
+    """Rankine–Hugoniot relations of a bore running along +x into the state (h_ahead, u_ahead).
+
+    Parameters
+    ----------
+    h_ahead : float
+        Depth ahead of the bore [m], > 0.
+    u_ahead : float
+        Velocity ahead of the bore [m s⁻¹].
+    h_behind : float
+        Depth behind the bore [m], > h_ahead (a bore deepens the water it passes).
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    BoreJump
+        Speed, both states, Froude number and head loss.
+
+    Notes
+    -----
+    Mass and momentum conservation across a discontinuity moving at s [2], [3]:
+    s (h_b − h_a) = h_b u_b − h_a u_a and s (h_b u_b − h_a u_a) = (h_b u_b² + g h_b²/2)
+    − (h_a u_a² + g h_a²/2). For a bore moving toward +x (into the shallower state)
+
+        s = u_a + √(g h_b (h_a + h_b) / (2 h_a)),   u_b = s − h_a (s − u_a)/h_b.
+
+    For a bore moving toward −x, mirror x (negate the velocities and the speed).
+    """
+    h_ahead = _check_positive("h_ahead", h_ahead)
+    h_behind = _check_positive("h_behind", h_behind)
+    if not h_behind > h_ahead:
+        raise ValueError(f"bore_jump needs h_behind > h_ahead; got {h_behind} and {h_ahead}")
+    relative = math.sqrt(g * h_behind * (h_ahead + h_behind) / (2.0 * h_ahead))  # s − u_a
+    speed = u_ahead + relative
+    u_behind = speed - h_ahead * relative / h_behind  # mass conservation
+    return BoreJump(
+        speed=speed,
+        h_ahead=h_ahead,
+        u_ahead=float(u_ahead),
+        h_behind=h_behind,
+        u_behind=u_behind,
+        froude=relative / math.sqrt(g * h_ahead),
+        head_loss=(h_behind - h_ahead) ** 3 / (4.0 * h_ahead * h_behind),
+    )
+
+
+def wall_reflection(h_stream: float, u_stream: float, g: float = G) -> tuple[float, float]:
+    """Bore reflected when a uniform stream (h, u > 0) runs into a wall at its +x end.
+
+    Parameters
+    ----------
+    h_stream : float
+        Depth of the incoming stream [m], > 0.
+    u_stream : float
+        Its velocity toward the wall [m s⁻¹], > 0.
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    h_wall : float
+        Depth between the reflected bore and the wall, where the water is at rest [m].
+    speed : float
+        Velocity of the reflected bore [m s⁻¹] (negative: it runs away from the wall).
+
+    Notes
+    -----
+    In the mirror frame the bore runs along +x into (h_stream, −u_stream) and leaves
+    water at rest behind it: h_wall solves u_behind(h_wall) = 0 in :func:`bore_jump`,
+    i.e. u_stream = (h_wall − h_stream) √(g (h_wall + h_stream)/(2 h_wall h_stream)) [2].
+    """
+    h_stream = _check_positive("h_stream", h_stream)
+    u_stream = _check_positive("u_stream", u_stream)
+
+    def mismatch(h_wall: float) -> float:
+        return (h_wall - h_stream) * math.sqrt(g * (h_wall + h_stream) / (2.0 * h_wall * h_stream)) - u_stream
+
+    upper = h_stream * 2.0
+    while mismatch(upper) < 0:
+        upper *= 2.0
+    h_wall = brentq(mismatch, h_stream, upper, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
+    jump = bore_jump(h_stream, -u_stream, h_wall, g)
+    return h_wall, -jump.speed
+
+
+def _hump_celerity(xi, h0, amplitude, width, x_c, g):
+    """c = √(g h) of the initial hump h0 + a exp(−((ξ − x_c)/w)²) and its derivative dc/dξ."""
+    bump = amplitude * np.exp(-(((xi - x_c) / width) ** 2))
+    c = np.sqrt(g * (h0 + bump))
+    dc = g * bump * (-2.0 * (xi - x_c) / width**2) / (2.0 * c)
+    return c, dc
+
+
+def simple_wave_breaking_time(h0: float, amplitude: float, width: float, g: float = G) -> float:
+    """Time at which the Gaussian simple wave of :func:`simple_wave` first breaks [s].
+
+    Parameters
+    ----------
+    h0, amplitude, width : float
+        Still depth [m], hump amplitude [m] (> 0) and e-folding half-width [m].
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    float
+        t_b = 1 / max(−dλ/dξ) with λ = 3 c(ξ) − 2 c0 the characteristic speed [4].
+    """
+    xi = np.linspace(-4.0 * width, 4.0 * width, 20001)
+    _, dc = _hump_celerity(xi, h0, amplitude, width, 0.0, g)
+    return float(1.0 / np.max(-3.0 * dc))
+
+
+def simple_wave(
+    x: ArrayLike, t: float, h0: float, amplitude: float, width: float, x_c: float = 0.0, g: float = G
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """A Gaussian hump running along +x into still water as a simple wave, exact before breaking.
+
+    Parameters
+    ----------
+    x : array_like
+        Positions [m].
+    t : float
+        Time [s], 0 ≤ t < :func:`simple_wave_breaking_time`.
+    h0 : float
+        Still-water depth [m].
+    amplitude : float
+        Height a of the initial hump [m], > 0.
+    width : float
+        Its e-folding half-width w [m]: h(x, 0) = h0 + a exp(−((x − x_c)/w)²).
+    x_c : float, optional
+        Initial position of the crest [m].
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    h, u : ndarray
+        Depth [m] and velocity [m s⁻¹]; at t = 0, u = 2(√(g h) − √(g h0)).
+
+    Notes
+    -----
+    The Riemann invariant u − 2c (c = √(g h)) is −2c0 everywhere, so u = 2(c − c0) and
+    c is constant along the characteristics dx/dt = u + c = 3c − 2c0 [2], [4]:
+    c(x, t) = c(ξ, 0) with x = ξ + (3 c(ξ, 0) − 2 c0) t, solved for ξ here by bisection
+    (the map is monotonic before breaking).
+    """
+    x = np.asarray(x, dtype=np.float64)
+    h0 = _check_positive("h0", h0)
+    amplitude = _check_positive("amplitude", amplitude)
+    width = _check_positive("width", width)
+    if t >= simple_wave_breaking_time(h0, amplitude, width, g):
+        raise ValueError(f"simple_wave is exact only before breaking; t = {t} s is too late")
+    c0 = math.sqrt(g * h0)
+    c_top = math.sqrt(g * (h0 + amplitude))
+    # foot of the characteristic ξ in [x − (3 c_top − 2 c0) t, x − c0 t]
+    lo = x - (3.0 * c_top - 2.0 * c0) * t - 1e-12
+    hi = x - c0 * t + 1e-12
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        c, _ = _hump_celerity(mid, h0, amplitude, width, x_c, g)
+        past = mid + (3.0 * c - 2.0 * c0) * t > x
+        hi = np.where(past, mid, hi)
+        lo = np.where(past, lo, mid)
+    c, _ = _hump_celerity(0.5 * (lo + hi), h0, amplitude, width, x_c, g)
+    return c * c / g, 2.0 * (c - c0)

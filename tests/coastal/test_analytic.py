@@ -1,0 +1,131 @@
+"""Closed-form shallow-water solutions: conservation laws, jump relations and limits they must satisfy."""
+
+import math
+
+import numpy as np
+import pytest
+
+from oceanrender.coastal.analytic import (
+    G,
+    bore_jump,
+    dam_break_ritter,
+    dam_break_stoker,
+    simple_wave,
+    simple_wave_breaking_time,
+    stoker_middle_state,
+    wall_reflection,
+)
+
+#: Tolerance for identities that hold to round-off in float64.
+EXACT = 1e-12
+
+
+def _integral(f, x):
+    return float(np.trapezoid(f, x))
+
+
+def test_ritter_conserves_mass_and_places_the_front():
+    x = np.linspace(-10.0, 20.0, 300001)
+    for t in (0.3, 1.0, 2.0):
+        h, u = dam_break_ritter(x, t, h_left=2.0, x0=0.0)
+        assert _integral(h, x) == pytest.approx(2.0 * 10.0, rel=1e-8)  # water that was behind the dam
+        front = 2.0 * math.sqrt(G * 2.0) * t
+        assert x[h > 0].max() == pytest.approx(front, abs=1e-3)
+        assert np.all(u[h == 0] == 0)
+
+
+def test_ritter_is_continuous_at_the_rarefaction_head():
+    c0 = math.sqrt(G * 1.5)
+    head = -c0 * 0.7
+    h, u = dam_break_ritter(np.array([head - 1e-9, head + 1e-9]), 0.7, h_left=1.5)
+    assert h[0] == pytest.approx(h[1], abs=1e-8)
+    assert u[1] == pytest.approx(0.0, abs=1e-8)
+
+
+def test_stoker_middle_state_satisfies_both_waves():
+    h_l, h_r = 1.0, 0.1
+    h_m, u_m, s = stoker_middle_state(h_l, h_r)
+    # rarefaction: the Riemann invariant u + 2c is carried from the still left state
+    assert u_m + 2.0 * math.sqrt(G * h_m) == pytest.approx(2.0 * math.sqrt(G * h_l), rel=EXACT)
+    # bore: Rankine–Hugoniot mass and momentum between (h_m, u_m) and (h_r, 0)
+    assert s * (h_m - h_r) == pytest.approx(h_m * u_m, rel=EXACT)
+    momentum = h_m * u_m**2 + 0.5 * G * h_m**2 - 0.5 * G * h_r**2
+    assert s * h_m * u_m == pytest.approx(momentum, rel=1e-11)
+
+
+def test_stoker_conserves_mass_and_matches_ritter_when_dry():
+    x = np.linspace(-10.0, 20.0, 300001)
+    h, _ = dam_break_stoker(x, 1.2, h_left=1.0, h_right=0.2)
+    dx = x[1] - x[0]  # the trapezoid rule is off by ≤ jump × dx/2 at the bore
+    assert _integral(h, x) == pytest.approx(1.0 * 10.0 + 0.2 * 20.0, abs=dx)
+    np.testing.assert_array_equal(dam_break_stoker(x, 0.5, 1.0, 0.0)[0], dam_break_ritter(x, 0.5, 1.0)[0])
+
+
+def test_dam_breaks_at_t0_are_the_initial_step():
+    x = np.array([-1.0, 1.0])
+    np.testing.assert_array_equal(dam_break_stoker(x, 0.0, 1.0, 0.3)[0], [1.0, 0.3])
+    np.testing.assert_array_equal(dam_break_ritter(x, 0.0, 1.0)[0], [1.0, 0.0])
+
+
+@pytest.mark.parametrize("u_ahead", [0.0, 0.7, -0.4])
+def test_bore_jump_satisfies_rankine_hugoniot(u_ahead):
+    j = bore_jump(h_ahead=0.5, u_ahead=u_ahead, h_behind=1.3)
+    mass = j.speed * (j.h_behind - j.h_ahead) - (j.h_behind * j.u_behind - j.h_ahead * j.u_ahead)
+    flux = lambda h, u: h * u**2 + 0.5 * G * h**2  # noqa: E731
+    momentum = j.speed * (j.h_behind * j.u_behind - j.h_ahead * j.u_ahead) - (
+        flux(j.h_behind, j.u_behind) - flux(j.h_ahead, j.u_ahead)
+    )
+    assert abs(mass) < EXACT
+    assert abs(momentum) < 1e-11
+    assert j.froude > 1 and j.head_loss > 0  # a bore is supercritical relative to the water ahead
+    # the energy jump, s [E] − [F_E], is the power lost in the bore: g × (discharge through it) × head loss
+    q = j.h_ahead * (j.speed - j.u_ahead)
+    energy = lambda h, u: 0.5 * h * u**2 + 0.5 * G * h**2  # noqa: E731
+    e_flux = lambda h, u: u * (0.5 * h * u**2 + G * h**2)  # noqa: E731
+    loss = j.speed * (energy(j.h_behind, j.u_behind) - energy(j.h_ahead, j.u_ahead)) - (
+        e_flux(j.h_behind, j.u_behind) - e_flux(j.h_ahead, j.u_ahead)
+    )
+    assert -loss == pytest.approx(G * q * j.head_loss, rel=1e-10)
+
+
+def test_weak_bore_moves_at_the_long_wave_speed():
+    j = bore_jump(1.0, 0.0, 1.0 + 1e-7)
+    assert j.speed == pytest.approx(math.sqrt(G), rel=1e-6)
+
+
+def test_wall_reflection_brings_the_stream_to_rest():
+    h_wall, speed = wall_reflection(0.6, 1.4)
+    j = bore_jump(0.6, -1.4, h_wall)  # mirror frame
+    assert j.u_behind == pytest.approx(0.0, abs=EXACT)
+    assert speed == pytest.approx(-j.speed, rel=EXACT) and speed < 0
+    # weak limit: linear reflection doubles the velocity head, h_wall − h ≈ u √(h/g)
+    h_weak, _ = wall_reflection(1.0, 1e-4)
+    assert h_weak - 1.0 == pytest.approx(1e-4 * math.sqrt(1.0 / G), rel=1e-3)
+
+
+def test_simple_wave_keeps_its_riemann_invariant_and_mass():
+    h0, a, w = 1.0, 0.2, 1.0
+    t_b = simple_wave_breaking_time(h0, a, w)
+    x = np.linspace(-10.0, 30.0, 200001)
+    h_init, u_init = simple_wave(x, 0.0, h0, a, w)
+    np.testing.assert_allclose(h_init, h0 + a * np.exp(-(x**2)), rtol=1e-12)
+    for t in (0.3 * t_b, 0.9 * t_b):
+        h, u = simple_wave(x, t, h0, a, w)
+        np.testing.assert_allclose(u - 2.0 * np.sqrt(G * h), -2.0 * math.sqrt(G * h0), atol=1e-12)
+        assert _integral(h - h0, x) == pytest.approx(_integral(h_init - h0, x), rel=1e-6)
+    with pytest.raises(ValueError, match="before breaking"):
+        simple_wave(x, 1.01 * t_b, h0, a, w)
+
+
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda: dam_break_ritter([0.0], 1.0, h_left=-1.0), "h_left"),
+        (lambda: stoker_middle_state(1.0, 2.0), "h_left > h_right"),
+        (lambda: bore_jump(1.0, 0.0, 0.5), "h_behind > h_ahead"),
+        (lambda: wall_reflection(1.0, 0.0), "u_stream"),
+    ],
+)
+def test_refuses_impossible_states(call, name):
+    with pytest.raises(ValueError, match=name):
+        call()

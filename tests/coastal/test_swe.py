@@ -1,0 +1,393 @@
+"""Shallow-water solver against analytic solutions, conservation, positivity, balance and bad input.
+
+The convergence numbers quoted in docs/coastal.md ("Solver", validation table) are
+printed by ``.venv/bin/python tests/coastal/test_swe.py``.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from oceanrender.coastal import swe
+from oceanrender.coastal.analytic import (
+    bore_jump,
+    dam_break_stoker,
+    simple_wave,
+    simple_wave_breaking_time,
+    stoker_middle_state,
+    wall_reflection,
+)
+from oceanrender.coastal.boundaries import Boundaries, Transmissive
+from oceanrender.coastal.swe import (
+    CFL_BOUND,
+    G,
+    ShallowWaterSolver,
+    SolverParams,
+    State,
+    lake_at_rest,
+)
+
+#: Relative volume change allowed for closed basins (round-off of the update sums).
+MASS_RTOL = 1e-12
+#: Rows of the narrow grids on which one-dimensional problems run (walls north and south).
+ROWS = 3
+#: Dry threshold of the validation runs [m]: thin enough not to delay Ritter's front.
+H_MIN_VALIDATION = 1e-6
+
+OPEN_ENDS = Boundaries(west=Transmissive(), east=Transmissive())
+
+
+def cell_average(profile, x_centres, dx, points=8):
+    """Exact cell averages of a profile(x) by Gauss–Legendre quadrature over each cell."""
+    nodes, weights = np.polynomial.legendre.leggauss(points)
+    x = x_centres[:, None] + 0.5 * dx * nodes[None, :]
+    return (profile(x) * weights[None, :]).sum(axis=1) / 2.0
+
+
+def channel(h, hu, dx, order, boundaries=Boundaries(), h_min=H_MIN_VALIDATION, **params):
+    """A one-dimensional profile on a ROWS × nx grid, flat bed at 0, and its solver."""
+    nx = h.size
+    solver = ShallowWaterSolver(
+        np.zeros((ROWS, nx)),
+        SolverParams(dx=dx, dy=dx, order=order, h_min=h_min, boundaries=boundaries, **params),
+    )
+    state = State(np.tile(h, (ROWS, 1)), np.tile(hu, (ROWS, 1)), np.zeros((ROWS, nx)))
+    return solver, state
+
+
+def l1_dam_break(order, nx, h_right, length=10.0, x0=5.0, h_left=1.0, t_end=0.6):
+    """L1 error [m²] of the depth of a dam break (Ritter if h_right = 0, else Stoker) at t_end."""
+    dx = length / nx
+    x = (np.arange(nx) + 0.5) * dx
+    solver, state = channel(np.where(x < x0, h_left, h_right), np.zeros(nx), dx, order)
+    solver.advance(state, t_end)
+    exact = cell_average(lambda s: dam_break_stoker(s, t_end, h_left, h_right, x0)[0], x, dx)
+    assert np.array_equal(state.h[0], state.h[ROWS - 1])  # the 1-D problem stays 1-D
+    return float(np.abs(state.h[1] - exact).sum() * dx)
+
+
+SIMPLE_WAVE = dict(h0=1.0, amplitude=0.2, width=1.0, x_c=4.0)
+
+
+def l1_simple_wave(order, nx, length=16.0):
+    """L1 error [m²] of a smooth simple wave at half its breaking time (open ends)."""
+    dx = length / nx
+    x = (np.arange(nx) + 0.5) * dx
+    h0 = cell_average(lambda s: simple_wave(s, 0.0, **SIMPLE_WAVE)[0], x, dx)
+    q0 = cell_average(lambda s: np.prod(simple_wave(s, 0.0, **SIMPLE_WAVE), axis=0), x, dx)
+    solver, state = channel(h0, q0, dx, order, boundaries=OPEN_ENDS)
+    t_end = 0.5 * simple_wave_breaking_time(1.0, 0.2, 1.0)
+    solver.advance(state, t_end)
+    exact = cell_average(lambda s: simple_wave(s, t_end, **SIMPLE_WAVE)[0], x, dx)
+    return float(np.abs(state.h[1] - exact).sum() * dx)
+
+
+CONVERGENCE = {
+    # case: (error function, coarse nx, fine nx, {order: (lowest, highest observed order)})
+    "Ritter (dry bed)": (lambda o, n: l1_dam_break(o, n, 0.0), 200, 400, {1: (0.5, 1.1), 2: (0.8, 1.5)}),
+    "Stoker (wet bed)": (lambda o, n: l1_dam_break(o, n, 0.1), 200, 400, {1: (0.5, 1.1), 2: (0.8, 1.5)}),
+    "simple wave (smooth)": (l1_simple_wave, 200, 400, {1: (0.7, 1.1), 2: (1.6, 2.3)}),
+}
+
+
+def observed(case, order):
+    error, coarse, fine, _ = CONVERGENCE[case]
+    e_coarse, e_fine = error(order, coarse), error(order, fine)
+    return e_coarse, e_fine, math.log2(e_coarse / e_fine)
+
+
+@pytest.mark.parametrize("case", list(CONVERGENCE))
+def test_convergence_against_analytic_solutions(case):
+    """Errors fall with the grid at the stated observed order; second order beats first."""
+    ranges = CONVERGENCE[case][3]
+    results = {order: observed(case, order) for order in (1, 2)}
+    for order, (e_coarse, e_fine, p) in results.items():
+        assert e_fine < e_coarse
+        low, high = ranges[order]
+        assert low <= p <= high, f"{case}, order {order}: observed order {p:.2f} outside [{low}, {high}]"
+    # second order: at least twice as accurate on the coarse grid already
+    assert results[2][0] < 0.5 * results[1][0]
+    if "smooth" in case:
+        assert results[2][2] > results[1][2] + 0.5  # it converges faster where the solution is smooth
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_bore_into_still_water_obeys_the_jump_relations(order):
+    jump = bore_jump(h_ahead=0.5, u_ahead=0.0, h_behind=1.0)
+    nx, length, x0, t_end = 400, 20.0, 5.0, 2.0
+    dx = length / nx
+    x = (np.arange(nx) + 0.5) * dx
+    behind = x < x0
+    solver, state = channel(np.where(behind, jump.h_behind, jump.h_ahead),
+                            np.where(behind, jump.h_behind * jump.u_behind, 0.0), dx, order, OPEN_ENDS)
+    solver.advance(state, t_end)
+    h = state.h[1]
+    # bore position from the volume between x = 2 m and the end (exact for a sharp jump)
+    start = int(2.0 / dx)
+    position = start * dx + float((h[start:] - jump.h_ahead).sum() * dx) / (jump.h_behind - jump.h_ahead)
+    assert position == pytest.approx(x0 + jump.speed * t_end, abs=0.2 * dx)
+    plateau = int((x0 + 0.5 * jump.speed * t_end) / dx)
+    assert h[plateau] == pytest.approx(jump.h_behind, rel=1e-4)
+    assert state.hu[1, plateau] / h[plateau] == pytest.approx(jump.u_behind, rel=1e-4)
+    assert h[-5] == pytest.approx(jump.h_ahead, rel=1e-12)
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_stoker_bore_reflects_from_a_wall(order):
+    """Closed box: the dam-break bore hits the east wall and comes back as the reflected bore."""
+    h_left, h_right, nx, length, x0 = 1.0, 0.3, 400, 20.0, 10.0
+    h_m, u_m, speed = stoker_middle_state(h_left, h_right)
+    h_wall, reflected = wall_reflection(h_m, u_m)
+    t_hit = (length - x0) / speed
+    t_end = t_hit + 1.5
+    dx = length / nx
+    x = (np.arange(nx) + 0.5) * dx
+    solver, state = channel(np.where(x < x0, h_left, h_right), np.zeros(nx), dx, order)
+    volume = state.volume(dx, dx)
+    solver.advance(state, t_end)
+    assert state.volume(dx, dx) == pytest.approx(volume, rel=MASS_RTOL)
+    h = state.h[1]
+    assert h[-1] == pytest.approx(h_wall, rel={1: 2e-3, 2: 5e-4}[order])
+    assert abs(state.hu[1, -1] / h[-1]) < 1e-3  # at rest against the wall
+    crossing = x[(h < 0.5 * (h_m + h_wall)) & (x > 12.0)].max() + 0.5 * dx
+    assert crossing == pytest.approx(length + reflected * (t_end - t_hit), abs=2.5 * dx)
+
+
+def bumpy_bed(rng, ny=24, nx=32, dx=0.5):
+    x = (np.arange(nx) + 0.5) * dx
+    y = (np.arange(ny) + 0.5) * dx
+    X, Y = np.meshgrid(x, y)
+    bed = (-1.0 + 0.08 * X + 0.6 * np.exp(-((X - 6) ** 2 + (Y - 6) ** 2) / 4)
+           + 1.3 * np.exp(-((X - 12) ** 2 + (Y - 4) ** 2) / 3) + 0.05 * rng.standard_normal((ny, nx)))
+    return bed, dx
+
+
+@pytest.mark.parametrize("order", [1, 2])
+@pytest.mark.parametrize("h_min, level, tolerance", [(1e-3, 0.0, 0.0), (0.0, 0.0, 0.0), (1e-3, 0.25, 1e-13)])
+def test_lake_at_rest_over_a_bumpy_bed_stays_at_rest(rng, order, h_min, level, tolerance):
+    """Well balanced with wet and dry cells and islands: bit for bit at rest when every
+    z_b + h rounds to the level, within round-off (~1e-15 m/s) when some cannot."""
+    bed, dx = bumpy_bed(rng)
+    state = lake_at_rest(bed, level, h_min)
+    wet = state.h > max(h_min, swe.H_FLOOR)
+    assert 0.2 < wet.mean() < 0.9  # the case has both
+    start = state.copy()
+    solver = ShallowWaterSolver(bed, SolverParams(dx=dx, dy=dx, order=order, h_min=h_min))
+    solver.advance(state, 10.0)
+    assert solver.cell_updates > 300 * bed.size
+    assert np.max(np.abs(state.h - start.h)) <= tolerance
+    u, v = state.velocities(h_min)
+    assert np.max(np.abs(u)) <= tolerance and np.max(np.abs(v)) <= tolerance
+
+
+def test_lake_at_rest_surface_is_as_exact_as_doubles_allow(rng):
+    bed, _ = bumpy_bed(rng)
+    state = lake_at_rest(bed, 0.0, 1e-3)
+    wet = state.h > 1e-3
+    assert np.all((bed + state.h)[wet] == 0.0)
+    assert np.all(state.h[~wet] == 1e-3)  # land keeps the resting film
+    state = lake_at_rest(bed, 0.25, 1e-3)
+    wet = state.h > 1e-3
+    assert np.mean((bed + state.h)[wet] == 0.25) > 0.5
+    assert np.all(np.abs((bed + state.h)[wet] - 0.25) <= 0.5 * np.spacing(state.h[wet]))
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_sloping_beach_has_no_shoreline_velocities(order):
+    """A lake against a beach, dry land above: |u| stays exactly 0 everywhere (no spurious shoreline flow)."""
+    nx, dx = 200, 0.1
+    bed = np.tile(-1.0 + 0.15 * (np.arange(nx) + 0.5) * dx, (ROWS, 1))
+    state = lake_at_rest(bed, 0.0, 1e-3)
+    solver = ShallowWaterSolver(bed, SolverParams(dx=dx, dy=dx, order=order))
+    solver.advance(state, 20.0)
+    assert solver.cell_updates > 3000 * bed.size
+    u, v = state.velocities(1e-3)
+    assert np.all(u == 0.0) and np.all(v == 0.0)
+    assert np.all(state.hu == 0.0) and np.all(state.hv == 0.0)
+
+
+def beach_with_dam(case, h_min=1e-3, n=60, dx=0.25):
+    """A 2-D basin with a beach, dry land and either a released water column or a thin film."""
+    x = (np.arange(n) + 0.5) * dx
+    X, Y = np.meshgrid(x, x)
+    bed = -0.5 + 0.1 * X + 0.1 * np.sin(Y)
+    if case == "dry bed":
+        state = lake_at_rest(bed, 0.0, h_min)
+        state.h += np.where(np.hypot(X - 5.0, Y - 7.5) < 2.5, 1.5, 0.0)
+    else:  # a thin layer everywhere, barely above the dry threshold, and a small hump
+        h = np.full_like(bed, 1.2 * h_min) + np.where(np.hypot(X - 7.5, Y - 7.5) < 2.5, 0.05, 0.0)
+        state = State(h, np.zeros_like(h), np.zeros_like(h))
+    return bed, state, dx
+
+
+@pytest.mark.parametrize("order", [1, 2])
+@pytest.mark.parametrize("case", ["dry bed", "thin layer"])
+def test_depth_positive_and_mass_conserved_on_dry_beds_and_thin_layers(order, case):
+    bed, state, dx = beach_with_dam(case)
+    solver = ShallowWaterSolver(bed, SolverParams(dx=dx, dy=dx, order=order, h_min=1e-3))
+    volume = state.volume(dx, dx)
+    for k in range(8):
+        solver.advance(state, state.t + 0.5)
+        assert np.all(np.isfinite(state.h)) and np.all(np.isfinite(state.hu)) and np.all(np.isfinite(state.hv))
+        assert state.h.min() >= 0.0
+        dry = state.h <= 1e-3
+        assert np.all(state.hu[dry] == 0.0) and np.all(state.hv[dry] == 0.0)
+    assert state.volume(dx, dx) == pytest.approx(volume, rel=MASS_RTOL)
+    assert solver.clamped_volume == 0.0  # positivity came from the scheme, not from the last-resort clamp
+
+
+def test_manning_friction_decelerates_a_uniform_stream():
+    """Uniform flow, open ends: only friction acts, du/dt = −g n² u²/h^{4/3}.
+
+    The semi-implicit update 1/u^{n+1} = 1/u^n + Δt g n²/h^{4/3} is exact for this ODE.
+    """
+    h0, u0, n_manning, t_end = 0.5, 2.0, 0.03, 20.0
+    nx, dx = 40, 1.0
+    solver, state = channel(np.full(nx, h0), np.full(nx, h0 * u0), dx, 1, OPEN_ENDS, manning=n_manning)
+    solver.advance(state, t_end)
+    exact = u0 / (1.0 + G * n_manning**2 * u0 * t_end / h0 ** (4.0 / 3.0))
+    u, _ = state.velocities(1e-3)
+    assert np.all(state.h == h0)
+    assert np.allclose(u, exact, rtol=1e-12)
+
+
+def test_friction_holds_a_thin_film_on_a_slope():
+    """The dissertation's resting film: friction in a layer near h_min keeps it from sliding fast."""
+    nx, dx = 50, 0.5
+    bed = np.tile(0.2 * (np.arange(nx) + 0.5) * dx, (ROWS, 1))  # 20 % slope, all land
+    state = State(np.full(bed.shape, 3e-3), np.zeros(bed.shape), np.zeros(bed.shape))
+    for manning, bound in ((0.0, None), (0.03, 0.05)):
+        s = state.copy()
+        solver = ShallowWaterSolver(bed, SolverParams(dx=dx, dy=dx, h_min=1e-3, manning=manning))
+        solver.advance(s, 5.0)
+        u, _ = s.velocities(1e-3)
+        if bound is None:
+            frictionless = np.abs(u).max()
+        else:
+            assert np.abs(u).max() < bound < frictionless
+
+
+def test_parallel_blocks_match_one_thread(monkeypatch):
+    """The row blocks run on several threads give exactly the one-thread result (both orders)."""
+    n = 260  # 67 600 cells ≥ PARALLEL_MIN_CELLS
+    assert n * n >= swe.PARALLEL_MIN_CELLS
+    x = (np.arange(n) + 0.5) * 0.5
+    bed = np.broadcast_to(-1.0 + 0.02 * x, (n, n)).copy()
+    start = lake_at_rest(bed, 0.0, 1e-3)
+    start.h += np.where(np.hypot(x[None, :] - 40, x[:, None] - 65) < 10, 0.5, 0.0)
+    for order in (1, 2):
+        results = []
+        for threshold in (swe.PARALLEL_MIN_CELLS, 10**12):
+            monkeypatch.setattr(swe, "PARALLEL_MIN_CELLS", threshold)
+            state = start.copy()
+            ShallowWaterSolver(bed, SolverParams(dx=0.5, dy=0.5, order=order)).advance(state, 1e9, max_steps=6)
+            results.append(state)
+        for name in ("h", "hu", "hv"):
+            np.testing.assert_array_equal(getattr(results[0], name), getattr(results[1], name))
+
+
+def test_advance_lands_on_t_end_and_counts_updates():
+    bed = np.zeros((ROWS, 50))
+    solver = ShallowWaterSolver(bed, SolverParams(dx=0.1, dy=0.1))
+    state = lake_at_rest(bed, 1.0, 1e-3)
+    state.h[:, :25] += 0.5
+    h_array = state.h
+    assert solver.advance(state, 0.3) is state
+    assert state.t == 0.3
+    assert state.h is h_array  # updated in place
+    steps = solver.cell_updates // bed.size
+    assert steps > 0 and solver.cell_updates == steps * bed.size
+    solver.advance(state, 10.0, max_steps=3)
+    assert solver.cell_updates == (steps + 3) * bed.size and state.t < 10.0
+    dt = solver.stable_dt(state)
+    solver.step(state, dt)
+    assert state.h is h_array
+
+
+def test_stable_dt_follows_the_courant_number():
+    bed = np.full((ROWS, 10), -2.0)
+    state = lake_at_rest(bed, 0.0, 1e-3)
+    state.hu[:] = 2.0  # u = 1 m/s
+    solver = ShallowWaterSolver(bed, SolverParams(dx=0.5, dy=0.25, cfl=0.4, boundaries=OPEN_ENDS))
+    a = math.sqrt(1.5 * G * 2.0)  # kinetic speed of the uniform Maxwellian
+    assert solver.stable_dt(state) == pytest.approx(0.4 / ((1.0 + a) / 0.5 + a / 0.25), rel=1e-12)
+    dry = State(np.zeros_like(bed), np.zeros_like(bed), np.zeros_like(bed))
+    assert solver.stable_dt(dry) == math.inf
+
+
+def test_state_velocities_are_zero_in_dry_cells():
+    state = State(np.array([[0.0, 5e-4, 0.5]]), np.array([[0.0, 1e-3, 0.25]]), np.zeros((1, 3)))
+    u, v = state.velocities(1e-3)
+    np.testing.assert_array_equal(u, [[0.0, 0.0, 0.5]])
+    np.testing.assert_array_equal(v, 0.0)
+    np.testing.assert_array_equal(state.surface(np.array([[1.0, 2.0, 3.0]])), [[1.0, 2.0005, 3.5]])
+
+
+@pytest.mark.parametrize(
+    "bed, message",
+    [
+        (np.zeros(10), "bed must be a 2-D array"),
+        (np.zeros((1, 10)), "ny >= 2"),
+        (np.array([[0.0, 1.0], [np.nan, 0.0]]), "bed must be finite; got 1 NaN/inf values, the first at"),
+    ],
+)
+def test_bad_bed_is_refused(bed, message):
+    with pytest.raises(ValueError, match=message):
+        ShallowWaterSolver(bed, SolverParams(dx=1.0, dy=1.0))
+
+
+@pytest.mark.parametrize(
+    "params, field",
+    [
+        (dict(cfl=1.2), r"SolverParams\.cfl must be in \(0, 1\.0\] for order 1"),
+        (dict(order=2, cfl=0.6), r"SolverParams\.cfl must be in \(0, 0\.5\] for order 2"),
+        (dict(h_min=-1e-3), r"SolverParams\.h_min must be >= 0; got -0\.001"),
+        (dict(manning=-0.01), r"SolverParams\.manning must be >= 0"),
+        (dict(order=3), r"SolverParams\.order must be 1 or 2; got 3"),
+        (dict(dx=0.0), r"SolverParams\.dx must be > 0"),
+        (dict(g=float("nan")), r"SolverParams\.g must be finite"),
+        (dict(boundaries="walls"), r"SolverParams\.boundaries must be a Boundaries"),
+    ],
+)
+def test_bad_parameters_are_refused_with_one_line(params, field):
+    kwargs = dict(dx=1.0, dy=1.0) | params
+    with pytest.raises(ValueError, match=field) as info:
+        SolverParams(**kwargs)
+    assert "\n" not in str(info.value)
+
+
+def test_cfl_bounds_are_accepted():
+    SolverParams(dx=1.0, dy=1.0, order=1, cfl=CFL_BOUND[1])
+    SolverParams(dx=1.0, dy=1.0, order=2, cfl=CFL_BOUND[2])
+
+
+def test_bad_state_is_refused_before_any_work():
+    bed = np.zeros((ROWS, 8))
+    solver = ShallowWaterSolver(bed, SolverParams(dx=1.0, dy=1.0))
+    with pytest.raises(ValueError, match=r"state\.h has shape \(3, 9\)"):
+        solver.advance(State(np.ones((ROWS, 9)), np.zeros((ROWS, 9)), np.zeros((ROWS, 9))), 1.0)
+    bad = State(np.ones((ROWS, 8)), np.zeros((ROWS, 8)), np.zeros((ROWS, 8)))
+    bad.hu[1, 2] = np.nan
+    with pytest.raises(ValueError, match="non-finite"):
+        solver.advance(bad, 1.0)
+    negative = State(-np.ones((ROWS, 8)), np.zeros((ROWS, 8)), np.zeros((ROWS, 8)))
+    with pytest.raises(ValueError, match="negative depths"):
+        solver.advance(negative, 1.0)
+    assert solver.cell_updates == 0
+
+
+def validation_table() -> str:
+    """Markdown table of the convergence study (docs/coastal.md)."""
+    lines = ["| case | order | L1 error, coarse [m²] | L1 error, fine [m²] | observed order | accepted range |",
+             "|---|---|---|---|---|---|"]
+    for case, (_, coarse, fine, ranges) in CONVERGENCE.items():
+        for order in (1, 2):
+            e_coarse, e_fine, p = observed(case, order)
+            lines.append(f"| {case}, nx = {coarse} → {fine} | {order} | {e_coarse:.3e} | {e_fine:.3e} | {p:.2f} | "
+                         f"{ranges[order][0]}–{ranges[order][1]} |")
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    print(validation_table())
