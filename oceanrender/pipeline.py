@@ -84,6 +84,15 @@ def sun_lobe_alpha(scene: Scene, body, roughness: float) -> float:
     return float(max(beckmann_alpha(body.total_slope_variance(roughness)), roughness, 1e-3))
 
 
+#: ∫ȳ(λ) dλ of the CIE 1931 2° observer over 360–830 nm [nm].
+INTEGRAL_YBAR_NM = 106.857
+
+
+def white_mean_radiance(white_XYZ) -> float:
+    """ȳ-weighted mean spectral radiance [W m⁻² sr⁻¹ nm⁻¹] of the adapting white: Y / (683 ∫ȳ dλ)."""
+    return float(white_XYZ[1]) / (683.0 * INTEGRAL_YBAR_NM)
+
+
 def vision_for_scene(scene: Scene) -> VisionModel:
     """The vision model Φ configured by the scene's ``[vision]`` section."""
     v = scene.vision
@@ -161,10 +170,12 @@ class Sequence:
         self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self.roughness = surface_roughness(scene, self.body)
         self.sun_lobe_alpha = sun_lobe_alpha(scene, self.body, self.roughness)
+        self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
+        self.in_water_clamp = scene.render.in_water_clamp * white_mean_radiance(self.white_xyz)
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
+                                            in_water_clamp=self.in_water_clamp,
                                             sun_lobe_alpha=self.sun_lobe_alpha, extra_shapes=self.body.extra_shapes(),
                                             spp=self.spp, resolution=self.resolution)
-        self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
         self.vision = vision_for_scene(scene)
 
     def time_of(self, frame: int) -> float:
@@ -195,6 +206,7 @@ class Sequence:
             "display_luminance_cd_m2": self.vision.display_max_luminance,
             "surface_roughness_beckmann_alpha": self.roughness,
             "sun_lobe_beckmann_alpha": self.sun_lobe_alpha if self.scene.render.sun_sampling else 0.0,
+            "in_water_clamp_W_m2_sr_nm": self.in_water_clamp,
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }

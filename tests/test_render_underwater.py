@@ -59,14 +59,15 @@ def test_sun_lobe_density_integrates_to_one_and_matches_its_samples(variant, alp
     assert mean_d[2] / np.linalg.norm(mean_d) == pytest.approx(cos_t, abs=0.02 + alpha / 5)
 
 
-def pool_scene(max_depth, spp):
+def pool_scene(max_depth, spp, clamp=0.0):
     """Deep pool (σ_t = 2 m⁻¹, albedo 0.3, isotropic), sun only, camera 1 m up looking straight down."""
     import mitsuba as mi
 
     register()
     return mi.load_dict({
         "type": "scene",
-        "integrator": split_integrator(max_depth, 5, sun=SUN, water_ior=N_WATER, sun_lobe_alpha=0.02),
+        "integrator": split_integrator(max_depth, 5, sun=SUN, water_ior=N_WATER, sun_lobe_alpha=0.02,
+                                       in_water_clamp=clamp),
         "sensor": {"type": "perspective", "fov": 20.0, "fov_axis": "x",
                    "to_world": look_at_transform((0.0, 0.0, 1.0), (0.0, 0.0, 0.0)),
                    "film": xyz_film(16, 16), "sampler": {"type": "independent", "sample_count": spp}},
@@ -122,3 +123,16 @@ def test_single_scattering_of_sunlight_matches_the_closed_form(variant):
     # Tolerance: Monte Carlo (~1 %) and the surface's 0.02 roughness.
     print(f"single scattering: rendered {Y_water:.6g}, closed form {expected:.6g}, ratio {Y_water / expected:.4f}")
     assert Y_water == pytest.approx(expected, rel=0.04)
+
+
+@pytest.mark.render
+def test_in_water_clamp_bounds_the_samples_and_is_inert_when_high(variant):
+    import mitsuba as mi
+
+    plain, high, low = (pool_scene(3, 16, clamp) for clamp in (0.0, 1e9, 1e-4))
+    images = [np.array(mi.render(scene, seed=3))[..., 1] for scene in (plain, high, low)]
+    np.testing.assert_allclose(images[1], images[0], rtol=1e-6)
+    # Clamped to 1e-4 W m⁻² sr⁻¹ nm⁻¹ per sample and wavelength: Y ≤ 1e-4 · ∫ȳ · T(0)/n² < 0.011.
+    assert images[2].max() < 1e-4 * 106.857 and images[2].mean() < 0.05 * images[0].mean()
+    with pytest.raises(ValueError, match="in_water_clamp"):
+        split_integrator(3, 5, sun=SUN, in_water_clamp=-1.0)

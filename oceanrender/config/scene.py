@@ -60,6 +60,10 @@ class RenderSettings(_Section):
     sun_sampling: bool = Field(
         True, description="('split' only) sample the sunlight refracted into the water at every in-water vertex"
     )
+    in_water_clamp: float = Field(
+        0.0, ge=0, le=1e6,
+        description="('split') firefly clamp: largest in-water radiance of one sample, in multiples of the "
+                    "mean radiance of a white Lambertian surface under the scene's sun and sky; 0: off (unbiased)")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")
 

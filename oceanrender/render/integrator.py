@@ -50,7 +50,7 @@ _CLASSES: dict[str, type] = {}
 
 
 def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: float = 1.333,
-                     sun_lobe_alpha: float = 0.2) -> dict:
+                     sun_lobe_alpha: float = 0.2, in_water_clamp: float = 0.0) -> dict:
     """Scene-dict entry of the split-surface integrator.
 
     Parameters
@@ -63,6 +63,8 @@ def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: flo
     water_ior : float        Refractive index of the water relative to air [-].
     sun_lobe_alpha : float   Beckmann roughness of the refracted-sun lobe: the total rms slope
                              of the sea surface [-].
+    in_water_clamp : float   Largest radiance one sample of the transmitted lobe may bring back,
+                             per wavelength [W m⁻² sr⁻¹ nm⁻¹]; 0: no clamp (unbiased).
 
     Call :func:`register` (after the variant is set) before loading the scene.
     """
@@ -76,6 +78,10 @@ def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: flo
             raise ValueError(f"need water_ior > 1 and 0 < sun_lobe_alpha ≤ 1, got {water_ior}, {sun_lobe_alpha}")
         entry.update({"sun_x": float(sun[0]), "sun_y": float(sun[1]), "sun_z": float(sun[2]),
                       "water_ior": float(water_ior), "sun_lobe_alpha": float(sun_lobe_alpha)})
+    if in_water_clamp < 0:
+        raise ValueError(f"in_water_clamp must be ≥ 0 [W m⁻² sr⁻¹ nm⁻¹], got {in_water_clamp}")
+    if in_water_clamp > 0:
+        entry["in_water_clamp"] = float(in_water_clamp)
     return entry
 
 
@@ -175,6 +181,7 @@ def _define_class() -> type:
             # A split needs a bounce after the first vertex: max_depth ≥ 2 (or unbounded).
             self.splits = self.max_depth < 0 or self.max_depth >= 2
             self.sun = None
+            self.in_water_clamp = float(props.get("in_water_clamp", 0.0))
             if "sun_z" in props:
                 self.sun = (float(props["sun_x"]), float(props["sun_y"]), float(props["sun_z"]))
                 self.water_ior = float(props.get("water_ior", 1.333))
@@ -218,6 +225,9 @@ def _define_class() -> type:
                                        alpha=self.sun_lobe_alpha, max_depth=depth,
                                        rr_depth=max(self.rr_depth - 1, 1))
             L += escaped_radiance(scene, sampler, self.reflected, escape)
+            if self.in_water_clamp > 0:
+                # NOTE: a stated, biased firefly clamp (scene setting render.in_water_clamp).
+                L = dr.minimum(L, self.in_water_clamp)
             return dr.select(active, L, 0.0)
 
         def to_string(self):

@@ -158,7 +158,8 @@ class WaterRenderer:
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
               roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None,
-              sun_lobe_alpha: float | None = None, extra_shapes: dict | None = None) -> "WaterRenderer":
+              sun_lobe_alpha: float | None = None, extra_shapes: dict | None = None,
+              in_water_clamp: float = 0.0) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
         ``roughness`` is the Beckmann α of the water surface [-];
@@ -176,7 +177,8 @@ class WaterRenderer:
         sun_sampling = {}
         if settings.render.sun_sampling and sun_lobe_alpha is not None:
             sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
-                            "water_ior": settings.water.ior, "sun_lobe_alpha": float(sun_lobe_alpha)}
+                            "water_ior": settings.water.ior, "sun_lobe_alpha": float(sun_lobe_alpha),
+                            "in_water_clamp": float(in_water_clamp)}
         scene = mi.load_dict({
             "type": "scene",
             "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth, **sun_sampling),

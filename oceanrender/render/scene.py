@@ -173,7 +173,7 @@ def water_surface_bsdf(ior: float, alpha: float) -> dict:
 
 
 def volumetric_integrator(kind: str, max_depth: int, sun=None, water_ior: float = 1.333,
-                          sun_lobe_alpha: float = 0.2) -> dict:
+                          sun_lobe_alpha: float = 0.2, in_water_clamp: float = 0.0) -> dict:
     """``volpath``, ``volpathmis`` or ``split`` with Russian roulette after 5 bounces.
 
     ``split`` is :class:`oceanrender.render.integrator.SplitSurfaceIntegrator`:
@@ -181,12 +181,13 @@ def volumetric_integrator(kind: str, max_depth: int, sun=None, water_ior: float 
     (registered here on first use). Given ``sun`` (unit vector towards it), it
     also samples the sunlight refracted into the water at every in-water vertex
     (:mod:`oceanrender.render.underwater`; ``water_ior`` [-], ``sun_lobe_alpha``
-    the total rms slope of the surface [-]).
+    the total rms slope of the surface [-]; ``in_water_clamp`` the firefly clamp of
+    the in-water radiance per sample [W m⁻² sr⁻¹ nm⁻¹], 0 for none).
     """
     if kind == "split":
         from .integrator import register, split_integrator  # noqa: PLC0415
 
         register()
         return split_integrator(int(max_depth), rr_depth=5, sun=sun, water_ior=water_ior,
-                                sun_lobe_alpha=sun_lobe_alpha)
+                                sun_lobe_alpha=sun_lobe_alpha, in_water_clamp=in_water_clamp)
     return {"type": kind, "max_depth": int(max_depth), "rr_depth": 5}
