@@ -52,6 +52,7 @@ def solver_for_scene(scene) -> tuple[ShallowWaterSolver, np.ndarray, State]:
         spectrum = directional_spectrum(scene.ocean)
     dx, dy = coastal.spacing
     params = SolverParams(dx=dx, dy=dy, order=coastal.order, cfl=coastal.cfl, h_min=coastal.h_min,
+                          limiter=coastal.limiter,
                           manning=coastal.manning, boundaries=inputs.boundaries(coastal, spectrum))
     bed = inputs.bathymetry(coastal)
     h = inputs.initial_depth(coastal, bed)

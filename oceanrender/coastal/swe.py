@@ -47,18 +47,28 @@ docs/coastal.md, section "Solver"):
   cells can be flooded, and their discharges are set to exactly 0 after every
   update, so no dry cell ever carries a velocity.
 * **Second order** (``order=2``): piecewise-linear reconstruction of (h, u, v, η)
-  with minmod-limited slopes [5], face beds z_f = η_f − h_f, the centred source
-  −g h_i Δη_i/Δx that keeps (5) well balanced [2], and Heun's two-stage
-  strong-stability-preserving Runge–Kutta method [4]: the finite-volume form of the
-  dissertation's P1 + RK2 + minmod (docs/coastal.md explains the choice over DG-P1
-  and MUSCL–Hancock).
+  with limited slopes (MC [7] by default; van Leer [8] or minmod [5]), face beds
+  z_f = η_f − h_f, the centred source −g h_i Δη_i/Δx that keeps (5) well balanced
+  [2], and Heun's two-stage strong-stability-preserving Runge–Kutta method [4]: the
+  finite-volume form of the dissertation's P1 + RK2 + minmod, with minmod an option
+  (docs/coastal.md explains the choice over DG-P1 and MUSCL–Hancock).
 * **Friction**: semi-implicit Manning [6], q^{n+1} = q* / (1 + Δt g n² |u*| / h^{4/3}),
   unconditionally stable and zero-preserving in thin layers.
 * **Time step**: Δt = ν / max_i[(|u_i| + a_i)/Δx + (|v_i| + a_i)/Δy] with the kinetic
   speed a = √(3gh/2) of (2). The outflow of a cell through its four faces is then at
   most ν times its water, so depths stay ≥ 0 for ν ≤ 1 at first order [1, 2] and for
-  ν ≤ ½ at second order (faces hold at most 1.5× the cell's depth and two Heun
-  stages are convex combinations of Euler steps): :data:`CFL_BOUND`.
+  ν ≤ ½ at second order (the cell average is the mean of its two face values in
+  each direction, every face value is ≥ 0, and two Heun stages are convex
+  combinations of Euler steps; the step is checked against the reconstructed face
+  speeds): :data:`CFL_BOUND`. Positivity alone would allow the mean particle speed
+  E|ξ| ≥ a/2 instead of |u| + a, but linear stability needs the largest one (the
+  kinetic flux diffuses the normal momentum with coefficient a), and the unsplit
+  update needs the sum over the two directions (docs/coastal.md).
+* **Limiters** (second order, :data:`LIMITERS`): minmod [5] (default, the
+  dissertation's), monotonized central (MC) [7] and van Leer's harmonic one [8].
+  All three vanish at extrema and are at most twice the smaller one-sided
+  difference, so face depths stay ≥ 0 and the positivity bound ν ≤ ½ is unchanged;
+  MC and van Leer clip smooth crests and sharpen fronts less than minmod.
 
 Equation numbers in the comments refer to the list above.
 
@@ -81,6 +91,12 @@ References
 .. [6] A. Chertock, S. Cui, A. Kurganov and T. Wu, "Well-balanced positivity
    preserving central-upwind scheme for the shallow water system with friction
    terms", Int. J. Numer. Meth. Fluids 78, 355–383, 2015, doi:10.1002/fld.4023.
+.. [7] B. van Leer, "Towards the ultimate conservative difference scheme. IV. A new
+   approach to numerical convection", J. Comput. Phys. 23(3), 276–299, 1977,
+   doi:10.1016/0021-9991(77)90095-X.
+.. [8] B. van Leer, "Towards the ultimate conservative difference scheme. II.
+   Monotonicity and conservation combined in a second-order scheme", J. Comput.
+   Phys. 14(4), 361–370, 1974, doi:10.1016/0021-9991(74)90019-9.
 """
 
 from __future__ import annotations
@@ -99,6 +115,7 @@ from .boundaries import Boundaries, BoundaryPlan
 __all__ = [
     "G",
     "CFL_BOUND",
+    "LIMITERS",
     "H_FLOOR",
     "SolverParams",
     "State",
@@ -111,6 +128,9 @@ G: float = 9.81
 
 CFL_BOUND: dict[int, float] = {1: 1.0, 2: 0.5}
 """Largest Courant number ν per order for which the scheme keeps depths ≥ 0 (module docstring)."""
+
+LIMITERS: dict[str, int] = {"minmod": 0, "MC": 1, "van Leer": 2}
+"""Slope limiters of the second-order reconstruction, by name (module docstring; the value is the kernel's code)."""
 
 H_FLOOR: float = 1e-10
 """Depth [m] at or below which a cell is dry even when h_min = 0, so hu/h is never formed from round-off."""
@@ -181,6 +201,10 @@ class SolverParams:
         Gravitational acceleration [m s⁻²], > 0.
     boundaries : Boundaries, optional
         Condition on each side (default: four walls).
+    limiter : str, optional
+        Slope limiter of the second-order reconstruction, a key of :data:`LIMITERS`
+        ("minmod", "MC", "van Leer"); ignored at first order. Default MC: about 2–3 times
+        lower L1 error than minmod on the validation cases at the same cost (docs/coastal.md).
 
     Raises
     ------
@@ -196,6 +220,7 @@ class SolverParams:
     manning: float = 0.0
     g: float = G
     boundaries: Boundaries = Boundaries()
+    limiter: str = "MC"
 
     def __post_init__(self) -> None:
         for name in ("dx", "dy", "g"):
@@ -213,6 +238,8 @@ class SolverParams:
         for name in ("h_min", "manning"):
             if _finite_number(name, getattr(self, name)) < 0:
                 raise ValueError(f"SolverParams.{name} must be >= 0; got {getattr(self, name)}")
+        if not isinstance(self.limiter, str) or self.limiter not in LIMITERS:
+            raise ValueError(f"SolverParams.limiter must be one of {sorted(LIMITERS)}; got {self.limiter!r}")
         if not isinstance(self.boundaries, Boundaries):
             raise ValueError(f"SolverParams.boundaries must be a Boundaries instance; got {self.boundaries!r}")
 
@@ -340,6 +367,22 @@ def lake_at_rest(bed: ArrayLike, level: float, h_min: float) -> State:
 def _minmod(a, b):
     """minmod(a, b): the smaller slope when both have one sign, else 0 (branch-free)."""
     return max(0.0, min(a, b)) + min(0.0, max(a, b))
+
+
+@njit(**_INLINE)
+def _limited_slope(a, b, lim):
+    """Limited slope from the backward and forward differences a, b: minmod (0), MC (1), van Leer (2) [5, 7].
+
+    All three are 0 at extrema and at most 2 min(|a|, |b|) in size, so a face value
+    stays between the cell's value and the average with its neighbour's (positive
+    depths stay positive; :data:`LIMITERS`).
+    """
+    if lim == 0:
+        return _minmod(a, b)
+    if lim == 1:  # MC: minmod(2a, 2b, (a + b)/2) [7]
+        return _minmod(2.0 * _minmod(a, b), 0.5 * (a + b))
+    ab = a * b  # van Leer: 2ab/(a + b) where ab > 0 [5]
+    return 2.0 * ab / (a + b) if ab > 0.0 else 0.0  # van Leer's harmonic limiter [8]
 
 
 @njit(**_EXACT)
@@ -656,18 +699,18 @@ def _flux_y_row1(south_row, north_row, yf, nx, K, half_g, c_r, c_a):
 
 
 @njit(**_INLINE)
-def _slopes_x(row, sx, nx, K):
-    """Minmod slopes (undivided) of (h, u, v, η) along a padded row, ghost cells included."""
+def _slopes_x(row, sx, nx, K, lim):
+    """Limited slopes (undivided) of (h, u, v, η) along a padded row, ghost cells included."""
     for f in range(4):
         a = row[f]
         s = sx[f]
         for p in range(1, nx + 2 * K - 1):
-            s[p] = _minmod(a[p] - a[p - 1], a[p + 1] - a[p])
+            s[p] = _limited_slope(a[p] - a[p - 1], a[p + 1] - a[p], lim)
 
 
 @njit(**_INLINE)
-def _slopes_y(below, row, above, sy, nx, K):
-    """Minmod slopes (undivided) of (h, u, v, η) across three padded rows, interior columns."""
+def _slopes_y(below, row, above, sy, nx, K, lim):
+    """Limited slopes (undivided) of (h, u, v, η) across three padded rows, interior columns."""
     for f in range(4):
         a = below[f]
         b = row[f]
@@ -675,7 +718,7 @@ def _slopes_y(below, row, above, sy, nx, K):
         s = sy[f]
         for i in range(nx):
             p = i + K
-            s[i] = _minmod(b[p] - a[p], c[p] - b[p])
+            s[i] = _limited_slope(b[p] - a[p], c[p] - b[p], lim)
 
 
 @njit(**_INLINE)
@@ -747,7 +790,7 @@ def _flux_y_row2(south_row, sys, north_row, syn, yf, nx, K, half_g, c_r, c_a):
 
 @njit(nogil=True, **_JIT)
 def _block_order2(b, sh, shu, shv, bh, bhu, bhv, oh, ohu, ohv, alpha, zpad, gcol, grow, halo, bounds,
-                  rows, sx, sy, fx, fy, tmp, walls, dt, dx, dy, g, h_dry, cf, red):
+                  rows, sx, sy, fx, fy, tmp, walls, dt, dx, dy, g, h_dry, cf, lim, red):
     """One Euler stage of the second-order scheme on the rows of block b:
     out = α base + (1 − α)(src + Δt L(src)).
 
@@ -782,8 +825,8 @@ def _block_order2(b, sh, shu, shv, bh, bhu, bhv, oh, ohu, ohv, alpha, zpad, gcol
     _load_row(j0 + 1, rb[s_p2], sh, shu, shv, zpad, gcol, grow, halo_b, j0, j1, inplace, K, h_dry)
     y_prev = 0
     y_cur = 1
-    _slopes_y(rb[s_m1], rb[s_0], rb[s_p1], sy[b, y_prev], nx, K)  # row j0 − 1
-    _slopes_y(rb[s_0], rb[s_p1], rb[s_p2], sy[b, y_cur], nx, K)  # row j0
+    _slopes_y(rb[s_m1], rb[s_0], rb[s_p1], sy[b, y_prev], nx, K, lim)  # row j0 − 1
+    _slopes_y(rb[s_0], rb[s_p1], rb[s_p2], sy[b, y_cur], nx, K, lim)  # row j0
     south = fy[b, 0]
     north = fy[b, 1]
     fmax_y = _flux_y_row2(rb[s_0], sy[b, y_prev], rb[s_p1], sy[b, y_cur], south, nx, K, half_g, c_r, c_a)
@@ -796,13 +839,13 @@ def _block_order2(b, sh, shu, shv, bh, bhu, bhv, oh, ohu, ohv, alpha, zpad, gcol
     neg = 0.0
     for j in range(j0, j1):
         _load_row(j + 2, rb[s_p2], sh, shu, shv, zpad, gcol, grow, halo_b, j0, j1, inplace, K, h_dry)
-        _slopes_y(rb[s_0], rb[s_p1], rb[s_p2], sy[b, y_prev], nx, K)  # row j + 1, into the free slot
+        _slopes_y(rb[s_0], rb[s_p1], rb[s_p2], sy[b, y_prev], nx, K, lim)  # row j + 1, into the free slot
         fmax_y = max(fmax_y, _flux_y_row2(rb[s_0], sy[b, y_cur], rb[s_p1], sy[b, y_prev], north,
                                           nx, K, half_g, c_r, c_a))
         if j == ny - 1 and walls[3] != 0:
             _wall_row(north, nx)
         row = rb[s_0]
-        _slopes_x(row, xs, nx, K)
+        _slopes_x(row, xs, nx, K, lim)
         fmax_x = max(fmax_x, _flux_x_row2(row, xs, xf, nx, K, half_g, c_r, c_a))
         _wall_ends(xf, nx, walls)
         _euler_row(sh[j], shu[j], shv[j], xf, south, north, tb, nx, dtdx, dtdy)
@@ -986,7 +1029,7 @@ class ShallowWaterSolver:
         red = work["red"]
         args = (*src, *base, *out, alpha, self._plan.zpad, self._gcol, self._grow, work["halo"], work["bounds"],
                 work["rows"], work["sx"], work["sy"], work["fx"], work["fy"], work["tmp"], self._plan.walls,
-                dt, p.dx, p.dy, p.g, self._h_dry, p.g * p.manning**2, red)
+                dt, p.dx, p.dy, p.g, self._h_dry, p.g * p.manning**2, LIMITERS[p.limiter], red)
         _run_blocks(_block_order2, work["bounds"].shape[0] - 1, args)
         faces = float(red[:, 1].max()) / p.dx + float(red[:, 2].max()) / p.dy
         return float(red[:, 0].max()), faces, ghost, float(red[:, 3].sum()), float(red[:, 4].sum())

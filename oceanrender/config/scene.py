@@ -282,6 +282,8 @@ class CoastalSettings(_Section):
     offshore_side: Literal["north", "south", "east", "west"] = Field("north", description="side the waves enter")
     lateral: Literal["wall", "transmissive"] = Field("transmissive", description="the two sides beside the offshore one")
     order: Literal[1, 2] = Field(2, description="1: first-order scheme; 2: second order")
+    limiter: Literal["MC", "van Leer", "minmod"] = Field(
+        "MC", description="(order 2) slope limiter; the dissertation's is minmod, MC halves the error here")
     cfl: float = Field(0.4, gt=0, le=1, description="Courant number [-]; ≤ 1 at first order, ≤ 0.5 at second")
     h_min: float = Field(0.002, ge=0, le=1, description="dry threshold: cells with depth ≤ h_min are land [m]")
     manning: float = Field(0.02, ge=0, le=1, description="Manning friction coefficient [s m^-1/3]")
