@@ -50,6 +50,7 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--resolution", type=_resolution, metavar="WxH", help="image size in pixels")
     render.add_argument("--out", type=Path, metavar="DIR", help="output root (default: the scene's, 'outputs')")
     render.add_argument("--variant", metavar="V", help="Mitsuba variant: 'auto' or e.g. llvm_ad_spectral")
+    render.add_argument("--denoise", action="store_true", help="denoise each frame (Intel Open Image Denoise)")
     render.add_argument("--no-progress", action="store_true", help="no progress bar")
 
     geometry = commands.add_parser(
@@ -82,6 +83,57 @@ def build_parser() -> argparse.ArgumentParser:
     coastal.add_argument("--out", type=Path, metavar="DIR", required=True, help="fields folder")
     coastal.add_argument("--no-progress", action="store_true", help="no progress bar")
 
+    bake = commands.add_parser(
+        "bake-luts", help="bake the real-time model's lookup textures (EXR + PNG + JSON)",
+        description="Bake, from the scene's water optics, sun and sky and vision model, the LUTs of the "
+                    "real-time water model: T0(h), T1(h, l), Fresnel (F and F^gamma), the sky environment map and "
+                    "the ripple normal and seafloor-offset maps, each as float EXR, 8-bit PNG preview and JSON "
+                    "sidecar, plus luts.json (docs/realtime.md). With adaptation_luminance = 'frame' the scene's "
+                    "first frame is path-traced to measure it (or give --adaptation-luminance).")
+    bake.add_argument("scene", type=Path, help="scene file (TOML)")
+    bake.add_argument("--out", type=Path, metavar="DIR", required=True, help="LUT folder")
+    bake.add_argument("--gamma", type=float, default=1.0, help="gamma of F^gamma in the Fresnel LUT (default 1)")
+    bake.add_argument("--reference-albedo", type=_albedo_pair, metavar="R400,R700",
+                      help="reference bottom albedo R0 of Eq. 22 (T0's bottom) at 400 and 700 nm (default 0,0)")
+    bake.add_argument("--floor-albedo", type=_albedo_pair, metavar="R400,R700",
+                      help="area-mean seafloor albedo that lights the bottom (T1) at 400 and 700 nm "
+                           "(default: the scene's sand and rock mixed by rock_cover)")
+    bake.add_argument("--adaptation-luminance", type=float, metavar="CD_M2",
+                      help="world adaptation luminance of the vision model [cd/m2] (default: the scene's)")
+    bake.add_argument("--resolution", type=_resolution, metavar="WxH",
+                      help="size of the reference frame rendered for adaptation 'frame' (default: the scene's)")
+    bake.add_argument("--spp", type=int, metavar="N", help="samples per pixel of that frame (default: the scene's)")
+    bake.add_argument("--variant", metavar="V", help="Mitsuba variant ('auto' by default)")
+
+    reference = commands.add_parser(
+        "reference", help="path-traced reference images vs the real-time model: dE2000 maps, G-buffers, gamma fit",
+        description="Per frame: the path-traced reference after the vision model, the real-time model's image "
+                    "(from the LUTs), a per-pixel CIEDE2000 map with statistics, the camera (JSON), the water mesh "
+                    "(PLY) and a G-buffer (EXR); then the gamma of F^gamma that minimises the mean dE over all "
+                    "frames, and report.json/report.md. References already in OUT with the same settings are reused.")
+    reference.add_argument("scene", type=Path, help="scene file (TOML)")
+    reference.add_argument("--frames", type=_frame_range, metavar="A:B",
+                           help="half-open frame range (default: the scene's)")
+    reference.add_argument("--out", type=Path, metavar="DIR", required=True, help="reference-set folder")
+    reference.add_argument("--luts", type=Path, metavar="DIR",
+                           help="LUTs from `oceanrender bake-luts` (default: bake them into OUT/luts)")
+    reference.add_argument("--spp", type=int, metavar="N", help="samples per pixel (default: the scene's)")
+    reference.add_argument("--resolution", type=_resolution, metavar="WxH", help="image size in pixels")
+    reference.add_argument("--noise-floor", action="store_true",
+                           help="render the first frame again with another seed and report the reference's noise")
+    reference.add_argument("--variant", metavar="V", help="Mitsuba variant ('auto' by default)")
+
+    movie = commands.add_parser(
+        "movie", help="an MP4 and a contact sheet of a finished sequence",
+        description="From DIR/frame_NNNN.png (a sequence `oceanrender render` wrote, e.g. outputs/open_ocean), "
+                    "write DIR/<name>.mp4 (H.264, yuv420p, imageio-ffmpeg's own ffmpeg) and "
+                    "DIR/contact_sheet.png; refuses a folder with a missing frame.")
+    movie.add_argument("folder", type=Path, help="sequence folder with frame_NNNN.png")
+    movie.add_argument("--fps", type=float, default=None,
+                       help="frames per second (default: from the frames' EXR metadata, else 24)")
+    movie.add_argument("--crf", type=int, default=18, help="H.264 quality, 0 (lossless) to 51 (default 18)")
+    movie.add_argument("--columns", type=int, default=6, help="contact-sheet columns (default 6)")
+
     commands.add_parser("info", help="versions, usable Mitsuba variants and the LLVM library",
                         description="Report versions and probe which Mitsuba spectral variants work here.")
     return parser
@@ -99,6 +151,8 @@ def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
     if args.out is not None:
         output["directory"] = str(args.out)
     render = {"variant": args.variant} if args.variant else {}
+    if getattr(args, "denoise", False):
+        render["denoise"] = True
     return with_overrides(scene, "command line", output=output, render=render)
 
 
@@ -208,6 +262,42 @@ def cmd_geometry(args: argparse.Namespace) -> int:
     return 0
 
 
+def _sequence_fps(folder: Path) -> float | None:
+    """Frames per second from the EXR metadata (frame / time_s of a frame > 0), if any."""
+    from .io.frames import read_exr  # noqa: PLC0415
+
+    for exr in sorted(folder.glob("frame_*.exr"))[1:3]:
+        try:
+            _, meta = read_exr(exr)
+            frame, time_s = float(meta["frame"]), float(meta["time_s"])
+        except (OSError, KeyError, ValueError, RuntimeError):
+            continue
+        if frame > 0 and time_s > 0:
+            return frame / time_s
+    return None
+
+
+def cmd_movie(args: argparse.Namespace) -> int:
+    from .production.movie import SequenceError, write_contact_sheet, write_movie  # noqa: PLC0415
+
+    folder = args.folder
+    if not folder.is_dir():
+        raise UserError(f"{folder}: not a folder")
+    fps = args.fps or _sequence_fps(folder) or 24.0
+    if not (0 < fps <= 1000 and 0 <= args.crf <= 51 and args.columns >= 1):
+        raise UserError(f"--fps must be in (0, 1000], --crf in [0, 51], --columns ≥ 1; got {fps}, {args.crf}, "
+                        f"{args.columns}")
+    name = folder.resolve().name
+    try:
+        movie = write_movie(folder, folder / f"{name}.mp4", fps, crf=args.crf)
+        sheet = write_contact_sheet(folder, folder / "contact_sheet.png", columns=args.columns)
+    except SequenceError as exc:
+        raise UserError(str(exc)) from None
+    print(f"wrote {movie.path} ({movie.frames} frames, {fps:g} fps, {movie.size[0]}x{movie.size[1]}) "
+          f"and {sheet.path} ({sheet.size[0]}x{sheet.size[1]})")
+    return 0
+
+
 def cmd_coastal(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     if args.frames is not None:
@@ -280,8 +370,177 @@ def cmd_optics(args: argparse.Namespace) -> int:
     return 0
 
 
+def _albedo_pair(text: str) -> tuple[float, float]:
+    try:
+        r400, r700 = (float(part) for part in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected R400,R700 (e.g. 0.25,0.45), got {text!r}") from None
+    if not (0 <= r400 <= 1 and 0 <= r700 <= 1):
+        raise argparse.ArgumentTypeError(f"albedos must lie in [0, 1], got {text!r}")
+    return r400, r700
+
+
+def _realtime_scene(args: argparse.Namespace) -> Scene:
+    """Load the scene with --frames/--spp/--resolution applied (validated like the file)."""
+    scene = load_scene(args.scene)
+    output = {key: value for key, value in (("frames", getattr(args, "frames", None)), ("spp", args.spp),
+                                            ("resolution", args.resolution)) if value is not None}
+    scene = with_overrides(scene, "command line", output=output)
+    check_resources(scene, str(args.scene))
+    return scene
+
+
+def _reference_renderer(scene: Scene, variant: str, frames: tuple[int, int]):
+    """A ReferenceRenderer of the scene, after running (or reusing) its coastal simulation."""
+    from .pipeline import coastal_store  # noqa: PLC0415
+    from .realtime.reference import ReferenceRenderer  # noqa: PLC0415
+
+    store = None
+    if scene.coastal is not None:
+        from .coastal.simulation import run_simulation  # noqa: PLC0415
+
+        # NOTE: the same store as `oceanrender render` uses, so simulations are shared between commands.
+        store = coastal_store(Path(scene.output.directory) / scene.name)
+        print(f"coastal simulation -> {store}", flush=True)
+        run_simulation(scene, store, frames)
+    return ReferenceRenderer(scene, variant, first_frame=frames[0], coastal_store=store)
+
+
+def _bake(scene: Scene, args, white_XYZ, reference_xyz=None):
+    """Bake the LUT set; the adaptation from --adaptation-luminance, else the scene (and reference_xyz)."""
+    import numpy as np  # noqa: PLC0415
+
+    from .realtime.bake import BakeSettings, bake_lut_set, measure_scene_light  # noqa: PLC0415
+    from .realtime.reference import scene_adaptation  # noqa: PLC0415
+
+    settings = BakeSettings(gamma=getattr(args, "gamma", 1.0),
+                            reference_albedo=getattr(args, "reference_albedo", None) or (0.0, 0.0),
+                            floor_albedo=getattr(args, "floor_albedo", None))
+    given = getattr(args, "adaptation_luminance", None)
+    if given is not None:
+        adaptation, source = float(given), "given on the command line"
+    else:
+        xyz = reference_xyz if reference_xyz is not None else np.zeros((1, 1, 3))
+        adaptation, source = scene_adaptation(scene, xyz, white_XYZ)
+    light = measure_scene_light(scene, settings, white_XYZ=white_XYZ)
+    return bake_lut_set(scene, light, adaptation, source, settings)
+
+
+def cmd_bake_luts(args: argparse.Namespace) -> int:
+    import numpy as np  # noqa: PLC0415
+
+    if not args.gamma > 0:
+        raise UserError(f"--gamma must be > 0, got {args.gamma}")
+    if args.adaptation_luminance is not None and not args.adaptation_luminance > 0:
+        raise UserError(f"--adaptation-luminance must be > 0 cd/m2, got {args.adaptation_luminance}")
+    scene = _realtime_scene(args)
+    runtime = activate(args.variant or scene.render.variant)
+    from .realtime.files import write_lut_set  # noqa: PLC0415
+    from .render.renderer import adapting_white_XYZ  # noqa: PLC0415
+
+    tic = time.perf_counter()
+    reference_xyz = None
+    if scene.vision.adaptation_luminance == "frame" and args.adaptation_luminance is None:
+        start = scene.output.frames[0]
+        renderer = _reference_renderer(scene, runtime.variant, (start, start + 1))
+        width, height = renderer.sequence.resolution
+        print(f"rendering frame {start} ({width}x{height}, {renderer.sequence.spp} spp) for the adaptation "
+              "luminance ('frame')", flush=True)
+        reference_xyz, _ = renderer.render_xyz(start)
+        white = renderer.white_XYZ
+    else:
+        white = adapting_white_XYZ(scene, seed=scene.render.seed)
+    lut_set = _bake(scene, args, white, reference_xyz)
+    written = write_lut_set(args.out, lut_set)
+    vision = lut_set.constants["vision"]
+    T0 = lut_set["T0"].data[0]
+    print(f"{scene.name}: L_wa = {vision['adaptation_luminance_cd_m2']:.6g} cd/m2 ({vision['adaptation_source']}); "
+          f"T0(0) = {np.round(T0[0], 4).tolist()}, T0(inf) = {np.round(T0[-1], 4).tolist()}; "
+          f"wrote {len(written)} files to {args.out} in {time.perf_counter() - tic:.1f} s")
+    return 0
+
+
+def cmd_reference(args: argparse.Namespace) -> int:
+    from .realtime.files import (  # noqa: PLC0415
+        read_lut_set,
+        read_reference_xyz,
+        write_comparison,
+        write_fitted,
+        write_lut_set,
+        write_report,
+    )
+    from .realtime.gamma_fit import fit_gamma, fit_view  # noqa: PLC0415
+    from .realtime.reference import compare_frame, reference_noise, reference_report, vision_state  # noqa: PLC0415
+
+    scene = _realtime_scene(args)
+    luts = None
+    if args.luts is not None:
+        if not (args.luts / "luts.json").is_file():
+            raise UserError(f"--luts {args.luts}: no luts.json there (run `oceanrender bake-luts` first)")
+        luts = read_lut_set(args.luts)
+        if luts.constants.get("scene") != scene.name:
+            print(f"warning: the LUTs were baked for scene {luts.constants.get('scene')!r}, not {scene.name!r}",
+                  file=sys.stderr)
+    runtime = activate(args.variant or scene.render.variant)
+    start, end = scene.output.frames
+    out = args.out
+    tic = time.perf_counter()
+    renderer = _reference_renderer(scene, runtime.variant, (start, end))
+    (width, height), spp = renderer.sequence.resolution, renderer.sequence.spp
+    print(f"oceanrender {__version__}: reference set of {scene.name}, frames {start}:{end}, {width}x{height}, "
+          f"{spp} spp, variant {runtime.variant} -> {out}", flush=True)
+
+    identity = {"scene": scene.name, "spp": spp, "resolution": f"{width}x{height}", "variant": runtime.variant,
+                "seed": scene.render.seed}
+    frames = {}
+    for frame in range(start, end):
+        tac = time.perf_counter()
+        xyz = read_reference_xyz(out / f"reference_{frame:04d}.exr", {**identity, "frame": frame})
+        repaired = 0
+        if xyz is None:
+            xyz, repaired = renderer.render_xyz(frame)
+            note = f"rendered in {time.perf_counter() - tac:.1f} s"
+        else:
+            note = "reused the stored reference"
+        frames[frame] = (xyz, repaired, renderer.gbuffer(frame), renderer.geometry)
+        print(f"frame {frame}: {note}", flush=True)
+
+    lut_folder = args.luts
+    if luts is None:
+        lut_folder = out / "luts"
+        luts = _bake(scene, args, renderer.white_XYZ, frames[start][0])
+        write_lut_set(lut_folder, luts)
+        print(f"baked the LUTs into {lut_folder}", flush=True)
+    phi = vision_state(scene, luts)
+
+    comparisons = {}
+    for frame, (xyz, repaired, gbuffer, geometry) in frames.items():
+        comparisons[frame] = comparison = compare_frame(xyz, gbuffer, luts, phi)
+        write_comparison(out, frame, xyz, comparison, gbuffer, renderer.camera, geometry, renderer.faces,
+                         {**identity, "frame": frame, "time_s": frame / scene.output.fps, "repaired_pixels": repaired,
+                          "n_water": scene.water.ior})
+        print(f"frame {frame}: dE2000 water mean {comparison.water.mean:.2f}, p95 {comparison.water.p95:.2f}, "
+              f"max {comparison.water.max:.2f} (gamma {luts.gamma:g})", flush=True)
+
+    fit = fit_gamma([fit_view(c.terms, c.reference_rgb) for c in comparisons.values()], gamma_start=luts.gamma)
+    fitted = {frame: c.at(fit.gamma) for frame, c in comparisons.items()}
+    for frame in comparisons:
+        write_fitted(out, frame, comparisons[frame], fitted[frame], {**identity, "frame": frame})
+    noise = None
+    if args.noise_floor:
+        noise = reference_noise(renderer, start, comparisons[start], phi)
+    report = reference_report(scene, (start, end), identity, lut_folder, phi, luts, fit, comparisons, fitted,
+                              {frame: entry[1] for frame, entry in frames.items()}, noise)
+    write_report(out, report)
+    print(f"gamma fit over {len(comparisons)} frame(s): gamma = {fit.gamma:.4g}; water dE2000 mean "
+          f"{fit.before.mean:.2f} -> {fit.after.mean:.2f}, p95 {fit.before.p95:.2f} -> {fit.after.p95:.2f}, "
+          f"max {fit.before.max:.2f} -> {fit.after.max:.2f}"
+          + (f"; reference noise (two seeds) mean {noise['water']['mean']:.2f}" if noise else "")
+          + f"; report {out / 'report.md'} ({time.perf_counter() - tic:.0f} s)")
+    return 0
+
 COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "coastal": cmd_coastal, "optics": cmd_optics,
-            "info": cmd_info}
+            "movie": cmd_movie, "info": cmd_info, "bake-luts": cmd_bake_luts, "reference": cmd_reference}
 
 
 def main(argv: list[str] | None = None) -> int:

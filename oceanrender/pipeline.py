@@ -26,7 +26,7 @@ from .vision.display import encode_sRGB_8bit
 from .vision.model import VisionModel
 
 #: Stages timed per frame, in order.
-STAGES = ("geometry", "update", "render", "vision", "write")
+STAGES = ("geometry", "update", "render", "denoise", "vision", "write")
 
 
 @dataclass(frozen=True)
@@ -207,6 +207,7 @@ class Sequence:
             "surface_roughness_beckmann_alpha": self.roughness,
             "sun_lobe_beckmann_alpha": self.sun_lobe_alpha if self.scene.render.sun_sampling else 0.0,
             "in_water_clamp_W_m2_sr_nm": self.in_water_clamp,
+            "denoiser": "Intel Open Image Denoise (pyoidn), colour only, HDR" if self.scene.render.denoise else "none",
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
@@ -227,6 +228,12 @@ class Sequence:
         xyz, repaired = self.renderer.render_xyz(self.spp, seed=self.scene.render.seed + frame)
         tac = time.perf_counter()
         seconds["render"] += tac - tic
+        if self.scene.render.denoise:
+            from .production.denoise import denoise_XYZ  # noqa: PLC0415
+
+            xyz = denoise_XYZ(xyz)
+            tic, tac = tac, time.perf_counter()
+            seconds["denoise"] += tac - tic
         adaptation = adaptation_luminance(self.scene, xyz, self.white_xyz)
         rgb = self.vision.apply(xyz, self.white_xyz, adaptation)
         rgb8 = encode_sRGB_8bit(rgb)

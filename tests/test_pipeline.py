@@ -95,6 +95,21 @@ def test_cli_tiny_render_end_to_end(tmp_path, capsys):
     assert frame_is_complete(tmp_path / "o2/tiny/frame_0002.exr", tmp_path / "o2/tiny/frame_0002.png", (12, 8))
 
 
+def test_cli_denoised_render_then_movie_and_contact_sheet(tmp_path, capsys):
+    scene = tiny_toml(tmp_path, frames=(0, 3), resolution=(32, 18))
+    assert main(["render", str(scene), "--denoise", "--no-progress"]) == 0
+    folder = tmp_path / "out" / "tiny"
+    channels, meta = read_exr(folder / "frame_0001.exr")
+    assert meta["denoiser"].startswith("Intel Open Image Denoise") and np.all(np.isfinite(channels["Y"]))
+    capsys.readouterr()
+    assert main(["movie", str(folder)]) == 0
+    assert "3 frames, 24 fps" in capsys.readouterr().out
+    assert (folder / "tiny.mp4").stat().st_size > 0 and (folder / "contact_sheet.png").is_file()
+    (folder / "frame_0001.png").unlink()
+    assert main(["movie", str(folder)]) == 2
+    assert "frame_0001.png" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize(
     ("args", "message"),
     [

@@ -64,6 +64,7 @@ class RenderSettings(_Section):
         0.0, ge=0, le=1e6,
         description="('split') firefly clamp: largest in-water radiance of one sample, in multiples of the "
                     "mean radiance of a white Lambertian surface under the scene's sun and sky; 0: off (unbiased)")
+    denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")
 
