@@ -427,8 +427,6 @@ def _bake(scene: Scene, args, white_XYZ, reference_xyz=None):
 
 
 def cmd_bake_luts(args: argparse.Namespace) -> int:
-    import numpy as np  # noqa: PLC0415
-
     if not args.gamma > 0:
         raise UserError(f"--gamma must be > 0, got {args.gamma}")
     if args.adaptation_luminance is not None and not args.adaptation_luminance > 0:
@@ -455,7 +453,7 @@ def cmd_bake_luts(args: argparse.Namespace) -> int:
     vision = lut_set.constants["vision"]
     T0 = lut_set["T0"].data[0]
     print(f"{scene.name}: L_wa = {vision['adaptation_luminance_cd_m2']:.6g} cd/m2 ({vision['adaptation_source']}); "
-          f"T0(0) = {np.round(T0[0], 4).tolist()}, T0(inf) = {np.round(T0[-1], 4).tolist()}; "
+          f"T0(0) = ({', '.join(f'{v:.4f}' for v in T0[0])}), T0(inf) = ({', '.join(f'{v:.4f}' for v in T0[-1])}); "
           f"wrote {len(written)} files to {args.out} in {time.perf_counter() - tic:.1f} s")
     return 0
 

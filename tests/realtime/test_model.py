@@ -1,0 +1,148 @@
+"""The CPU real-time model: Eq. 20 exactly, Eq. 22, the Fresnel LUT, the sun glint, land and sky pixels."""
+
+import math
+
+import numpy as np
+import pytest
+
+from oceanrender.optics.fresnel import N_AIR, reflectance_Fresnel
+from oceanrender.realtime.bake import BakeSettings
+from oceanrender.realtime.gbuffer import KIND_LAND, KIND_SKY, KIND_WATER, GBuffer
+from oceanrender.realtime.model import (
+    distribution_Beckmann,
+    realtime_terms,
+    render_realtime,
+    sample_envmap,
+    sample_lut_1d,
+    sample_lut_2d,
+    sun_glint,
+)
+
+from . import SMALL, synthetic_light, synthetic_lut_set
+
+N = 1.333
+
+
+def gbuffer(rng, kind, depth=np.inf, path=np.inf, rock=0.0, shape=(4, 6)):
+    """A G-buffer of random downward views onto slightly tilted surfaces."""
+    ray = np.stack([rng.uniform(-0.5, 0.5, shape), rng.uniform(0.2, 1.0, shape), rng.uniform(-1.0, -0.15, shape)], -1)
+    ray /= np.linalg.norm(ray, axis=-1, keepdims=True)
+    normal = np.stack([rng.uniform(-0.2, 0.2, shape), rng.uniform(-0.2, 0.2, shape), np.ones(shape)], -1)
+    normal /= np.linalg.norm(normal, axis=-1, keepdims=True)
+    full = lambda v: np.broadcast_to(np.asarray(v, dtype=np.float64), shape).copy()  # noqa: E731
+    zeros3 = np.zeros(shape + (3,))
+    return GBuffer(kind=full(kind).astype(np.uint8), ray=ray, position=zeros3, normal=normal, geo_normal=normal,
+                   distance=full(10.0), cos_view=np.clip(np.sum(normal * -ray, -1), 0, 1), depth=full(depth),
+                   path_length=full(path), refracted=zeros3, bottom_position=zeros3, rock=full(rock))
+
+
+@pytest.fixture(scope="module")
+def open_sea():
+    """An open-sea LUT set (no seafloor) whose sky has the same radiance in every direction."""
+    sky = 0.05 * np.ones(95)
+    return synthetic_lut_set(coastal=False, light=synthetic_light(constant_sky=sky))
+
+
+@pytest.fixture(scope="module")
+def coastal():
+    return synthetic_lut_set()
+
+
+@pytest.mark.parametrize("gamma", [1.0, 0.6])
+def test_open_sea_with_exact_fresnel_is_eq_20(open_sea, rng, gamma):
+    g = gbuffer(rng, KIND_WATER)
+    rgb = render_realtime(g, open_sea, gamma=gamma, fresnel="exact", glint=False)
+    F = reflectance_Fresnel(g.cos_view, N_AIR, N) ** gamma
+    sky = open_sea["sky"].data[0, 0].astype(np.float64)  # every texel holds the same colour
+    deep = open_sea["T0"].data[0, -1].astype(np.float64)  # T0(h = ∞), the last texel
+    expected = sky * F[..., None] + deep * (1 - F[..., None])  # Eq. 20
+    np.testing.assert_allclose(rgb, expected, rtol=1e-12, atol=1e-12)
+    assert np.all(open_sea["sky"].data == open_sea["sky"].data[0, 0])
+
+
+def test_fresnel_lut_interpolates_the_exact_reflectance_closely():
+    luts = synthetic_lut_set(BakeSettings(depth_texels=3, path_texels=3, fresnel_texels=256, sky_size=(8, 4),
+                                          ripple_texels=8, ripple_patch=1.0))
+    mu = np.linspace(0.0, 1.0, 10001)
+    error = np.abs(sample_lut_1d(luts["fresnel"], mu)[..., 0] - reflectance_Fresnel(mu, N_AIR, N))
+    assert error.max() < 3e-4
+    np.testing.assert_allclose(sample_lut_1d(luts["fresnel"], luts["fresnel"].columns.values)[..., 0],
+                               luts["fresnel"].data[0, :, 0], rtol=1e-7)
+
+
+def test_coastal_water_is_eq_22(coastal, rng):
+    h, l = 0.6, 0.9
+    sand = gbuffer(rng, KIND_WATER, depth=h, path=l, rock=0.0)
+    rock = gbuffer(rng, KIND_WATER, depth=h, path=l, rock=1.0)
+    a, b = realtime_terms(sand, coastal), realtime_terms(rock, coastal)
+    T0 = sample_lut_1d(coastal["T0"], h)
+    T1 = sample_lut_2d(coastal["T1"], l, h)
+    R0 = coastal.rgb("reference_albedo_rgb")
+    expected = T0 + T1 * (coastal.rgb("sand_albedo_rgb") - R0)  # Eq. 22
+    np.testing.assert_allclose(a.C_water, np.broadcast_to(expected, a.C_water.shape), rtol=1e-12)
+    np.testing.assert_allclose(b.C_water - a.C_water,
+                               np.broadcast_to(T1 * (coastal.rgb("rock_albedo_rgb") - coastal.rgb("sand_albedo_rgb")),
+                                               a.C_water.shape), rtol=1e-10, atol=1e-12)
+    # A refracted ray that never meets the seafloor sees the water column only.
+    lost = realtime_terms(gbuffer(rng, KIND_WATER, depth=h, path=np.inf), coastal)
+    np.testing.assert_allclose(lost.C_water, np.broadcast_to(T0, lost.C_water.shape), rtol=1e-12)
+    # Sand in thin water is brighter than sand under deep water, and rock darker than sand.
+    deep = realtime_terms(gbuffer(rng, KIND_WATER, depth=5.0, path=7.0), coastal)
+    assert np.all(a.C_water.sum(-1) > deep.C_water.sum(-1)) and np.all(b.C_water.sum(-1) < a.C_water.sum(-1))
+
+
+def test_land_and_sky_pixels(coastal, rng):
+    g = gbuffer(rng, KIND_LAND, rock=0.0)
+    flat = GBuffer(**{**g.__dict__, "normal": np.broadcast_to([0.0, 0.0, 1.0], g.normal.shape).copy()})
+    rgb = render_realtime(flat, coastal)
+    sun_z = coastal.constants["sun_direction"][2]
+    expected = coastal.rgb("sand_albedo_rgb") * (coastal.rgb("sun_irradiance_rgb") * sun_z
+                                                 + coastal.rgb("sky_irradiance_rgb"))
+    np.testing.assert_allclose(rgb, np.broadcast_to(expected, rgb.shape), rtol=1e-12)
+    sky = gbuffer(rng, KIND_SKY)
+    np.testing.assert_allclose(render_realtime(sky, coastal), sample_envmap(coastal["sky"], sky.ray), rtol=1e-12)
+
+
+def test_reflections_below_the_horizon_see_the_horizon_sky(coastal, rng):
+    g = gbuffer(rng, KIND_WATER)
+    ray = np.broadcast_to(np.array([0.0, np.cos(0.05), -np.sin(0.05)]), g.ray.shape).copy()  # 3° down
+    normal = np.broadcast_to(np.array([0.0, 0.03, 1.0]) / np.hypot(0.03, 1.0), g.ray.shape).copy()  # tilted away
+    steep = GBuffer(**{**g.__dict__, "ray": ray, "normal": normal, "cos_view": np.sum(normal * -ray, -1)})
+    mirror = ray + 2 * steep.cos_view[..., None] * normal
+    assert np.all(steep.cos_view > 0) and np.all(mirror[..., 2] < 0)  # seen from the front, mirrored into the sea
+    T_refl = realtime_terms(steep, coastal).T_refl
+    assert np.all(T_refl.sum(-1) > 0)
+    horizon = mirror.copy()
+    horizon[..., 2] = 1e-3
+    horizon /= np.linalg.norm(horizon, axis=-1, keepdims=True)
+    np.testing.assert_allclose(T_refl, sample_envmap(coastal["sky"], horizon), rtol=1e-12)
+
+
+def test_beckmann_distribution_is_normalised():
+    theta = np.linspace(0.0, math.pi / 2, 20001)
+    for alpha in (0.05, 0.2, 0.5):
+        integral = np.trapezoid(distribution_Beckmann(np.cos(theta), alpha) * np.cos(theta) * np.sin(theta), theta)
+        assert 2 * math.pi * integral == pytest.approx(1.0, rel=1e-4)
+
+
+def test_sun_glint_reflects_the_fresnel_share_of_the_sun():
+    """Sun at the zenith over a level, slightly rough surface: ∫ L cos θ_v dω_v = F(0) E_sun."""
+    theta = np.linspace(0.0, math.pi / 2, 4001)[1:]
+    phi = 0.0  # isotropic: one azimuth suffices
+    view = np.stack([np.sin(theta) * math.cos(phi), np.sin(theta) * math.sin(phi), np.cos(theta)], -1)
+    normal = np.broadcast_to([0.0, 0.0, 1.0], view.shape)
+    E_sun = np.ones(3) / math.pi  # so that π · sun_rgb = 1
+    L = sun_glint(normal, view, np.array([0.0, 0.0, 1.0]), 0.1, N, E_sun)[..., 0]
+    flux = 2 * math.pi * np.trapezoid(L * np.cos(theta) * np.sin(theta), theta)
+    assert flux == pytest.approx(reflectance_Fresnel(1.0, N_AIR, N), rel=0.02)
+    # No glint when the sun is below the mean surface.
+    assert np.all(sun_glint(normal, view, np.array([0.0, 0.6, -0.8]), 0.1, N, E_sun) == 0)
+
+
+def test_unknown_fresnel_source_is_refused(coastal, rng):
+    with pytest.raises(ValueError, match="fresnel"):
+        realtime_terms(gbuffer(rng, KIND_WATER), coastal, fresnel="table")
+
+
+def test_small_settings_are_small():
+    assert SMALL.depth_texels < 64  # keeps these tests fast
