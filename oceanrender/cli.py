@@ -62,6 +62,9 @@ def build_parser() -> argparse.ArgumentParser:
     geometry.add_argument("--frames", type=_frame_range, metavar="A:B", help="half-open frame range (default: the scene's)")
     geometry.add_argument("--out", type=Path, metavar="DIR", required=True, help="export folder")
     geometry.add_argument("--ply", action="store_true", help="also write mesh_NNNN.ply per frame")
+    geometry.add_argument("--camera-mesh", action="store_true",
+                          help="also write the camera-following radial mesh and its per-ring LOD weights "
+                               "(camera_mesh.ply, camera_mesh.json) for real-time engines")
 
     optics = commands.add_parser(
         "optics", help="the water's IOPs and four-flux light field: CSV, JSON and plots",
@@ -258,6 +261,12 @@ def cmd_geometry(args: argparse.Namespace) -> int:
         written += len(export_geometry_sequence(folder, patch, times,
                                                 mesh_depth=scene.water.depth if args.ply else None))
         print(f"cascade {index}: patch {patch.grid.patch_size:g} m, {patch.grid.resolution}² -> {folder}")
+    if args.camera_mesh:
+        from .io.camera_mesh import export_camera_mesh  # noqa: PLC0415
+
+        ply, table = export_camera_mesh(scene, args.out)
+        written += 2
+        print(f"camera-following mesh -> {ply}, {table}")
     print(f"wrote {written} file(s) for frames {start}:{end}")
     return 0
 
