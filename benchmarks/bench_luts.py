@@ -20,18 +20,9 @@ import time
 from pathlib import Path
 
 import numpy as np
+from bench_optics import timed  # noqa: E402 (a sibling script: benchmarks/ is on sys.path)
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def timed(function, repeats: int = 10) -> tuple[float, float]:
-    """(best, median) wall time of ``function()`` [s]."""
-    times = []
-    for _ in range(repeats):
-        tic = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - tic)
-    return min(times), float(np.median(times))
 
 
 def main() -> None:

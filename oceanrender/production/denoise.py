@@ -61,7 +61,7 @@ import numpy as np
 
 from ..config import CameraSettings, Scene
 from ..geometry.body import FrameGeometry
-from ..render.renderer import FOAM_ATTRIBUTE, WATER_ID
+from ..render.renderer import FOAM_ATTRIBUTE, WATER_ID, mitsuba_floats, water_mesh
 from ..render.scene import perspective_sensor
 
 #: XYZ → linear Rec. 709 (sRGB primaries, D65), as in Mitsuba's ``xyz_to_srgb`` [3].
@@ -229,27 +229,9 @@ def feature_water_bsdf(water_albedo: float = 1.0, foam_albedo: float | None = No
             "bsdf_1": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(foam_albedo)}}}
 
 
-def _floats(array: np.ndarray):
-    import mitsuba as mi  # noqa: PLC0415
-
-    return mi.Float(np.ascontiguousarray(array, dtype=np.float32).ravel())
-
-
 def feature_water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict):
     """The water surface as a Mitsuba mesh (id :data:`~oceanrender.render.renderer.WATER_ID`) with ``bsdf``, no medium."""
-    import mitsuba as mi  # noqa: PLC0415
-
-    props = mi.Properties()
-    props["bsdf"] = mi.load_dict(bsdf)
-    mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
-    if geometry.foam is not None:
-        mesh.add_attribute(FOAM_ATTRIBUTE, 1, _floats(geometry.foam))
-    params = mi.traverse(mesh)
-    params["vertex_positions"] = _floats(geometry.positions)
-    params["vertex_normals"] = _floats(geometry.normals)
-    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
-    params.update()
-    return mesh
+    return water_mesh(faces, geometry, bsdf)
 
 
 @dataclass(frozen=True)
@@ -325,10 +307,10 @@ class FeatureRenderer:
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], normals and foam in place."""
-        self.params[f"{WATER_ID}.vertex_positions"] = _floats(geometry.positions)
-        self.params[f"{WATER_ID}.vertex_normals"] = _floats(geometry.normals)
+        self.params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
+        self.params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
         if geometry.foam is not None:
-            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = _floats(geometry.foam)
+            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
         self.params.update()
 
     def render(self, seed: int = 0) -> Features:

@@ -66,24 +66,27 @@ def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
 FOAM_ATTRIBUTE = "vertex_foam"
 
 
-def _floats(array: np.ndarray):
+def mitsuba_floats(array: np.ndarray):
+    """A flat ``mi.Float`` of ``array`` as float32 (Mitsuba's vertex buffers)."""
     import mitsuba as mi  # noqa: PLC0415
 
     return mi.Float(np.ascontiguousarray(array, dtype=np.float32).ravel())
 
 
-def _water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: dict):
+def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: dict | None = None):
+    """The water body as a Mitsuba mesh (id :data:`WATER_ID`) with ``bsdf`` and, if given, an interior medium."""
     import mitsuba as mi  # noqa: PLC0415
 
     props = mi.Properties()
     props["bsdf"] = mi.load_dict(bsdf)
-    props["interior"] = mi.load_dict(medium)
+    if medium is not None:
+        props["interior"] = mi.load_dict(medium)
     mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
     if geometry.foam is not None:
-        mesh.add_attribute(FOAM_ATTRIBUTE, 1, _floats(geometry.foam))
+        mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(geometry.foam))
     params = mi.traverse(mesh)
-    params["vertex_positions"] = _floats(geometry.positions)
-    params["vertex_normals"] = _floats(geometry.normals)
+    params["vertex_positions"] = mitsuba_floats(geometry.positions)
+    params["vertex_normals"] = mitsuba_floats(geometry.normals)
     params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
     params.update()
     return mesh
@@ -119,10 +122,10 @@ def terrain_shape(positions: np.ndarray, faces: np.ndarray, normals: np.ndarray,
         "bsdf_1": {"type": "diffuse", "reflectance": linear_albedo_spectrum(rock_albedo)},
     })
     mesh = mi.Mesh("terrain", len(positions), len(faces), props, has_vertex_normals=True)
-    mesh.add_attribute(ROCK_ATTRIBUTE, 1, _floats(rock))
+    mesh.add_attribute(ROCK_ATTRIBUTE, 1, mitsuba_floats(rock))
     params = mi.traverse(mesh)
-    params["vertex_positions"] = _floats(positions)
-    params["vertex_normals"] = _floats(normals)
+    params["vertex_positions"] = mitsuba_floats(positions)
+    params["vertex_normals"] = mitsuba_floats(normals)
     params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
     params.update()
     return mesh
@@ -173,7 +176,7 @@ class WaterRenderer:
         bsdf = water_surface_bsdf(settings.water.ior, roughness)
         if geometry.foam is not None:
             bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
-        mesh = _water_mesh(faces, geometry, bsdf, water_medium(iops))
+        mesh = water_mesh(faces, geometry, bsdf, water_medium(iops))
         sun_sampling = {}
         if settings.render.sun_sampling and sun_lobe_alpha is not None:
             sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
@@ -191,10 +194,10 @@ class WaterRenderer:
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
-        self.params[f"{WATER_ID}.vertex_positions"] = _floats(geometry.positions)
-        self.params[f"{WATER_ID}.vertex_normals"] = _floats(geometry.normals)
+        self.params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
+        self.params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
         if geometry.foam is not None:
-            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = _floats(geometry.foam)
+            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
         self.params.update()
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
