@@ -239,6 +239,9 @@ class Sequence:
         rgb8 = encode_sRGB_8bit(rgb)
         tic = time.perf_counter()
         seconds["vision"] += tic - tac
+        if self.renderer.bands and self.renderer.last_bands is not None:
+            write_exr(paths.exr.with_name(paths.exr.stem + "_spectral.exr"),
+                      *spectral_frame(self.renderer.last_bands, self.metadata(frame, repaired, adaptation)))
         channels = {name: xyz[..., i] for i, name in enumerate("XYZ")}
         channels.update({name: rgb[..., i] for i, name in enumerate("RGB")})
         write_exr(paths.exr, channels, self.metadata(frame, repaired, adaptation))
@@ -253,6 +256,26 @@ def remove_stale_temporaries(out_dir: str | Path) -> list[Path]:
     for path in stale:
         path.unlink(missing_ok=True)
     return stale
+
+
+def spectral_frame(band_integrals: np.ndarray, metadata: dict) -> tuple[dict[str, np.ndarray], dict]:
+    """Channels and metadata of a frame's spectral EXR: mean radiance per band [W m⁻² sr⁻¹ nm⁻¹].
+
+    ``band_integrals`` (H, W, N) are the film's ∫L dλ over N equal bands of the
+    film's range [W m⁻² sr⁻¹]; each becomes a channel named ``"<lo>-<hi>nm"``
+    holding the band's mean spectral radiance (the integral over its width).
+    Not adapted: absolute radiance, for re-lighting or another vision model.
+    """
+    from .render.scene import spectral_band_edges  # noqa: PLC0415
+
+    bands = band_integrals.shape[-1]
+    edges = spectral_band_edges(bands)
+    widths = np.diff(edges)
+    channels = {f"{lo:.1f}-{hi:.1f}nm": (band_integrals[..., i] / widths[i]).astype(np.float32)
+                for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:]))}
+    meta = {**metadata, "channels": "mean spectral radiance per band [W m-2 sr-1 nm-1], absolute, not adapted",
+            "band_edges_nm": " ".join(f"{e:.3f}" for e in edges)}
+    return channels, meta
 
 
 def coastal_store(out_dir: str | Path) -> Path:

@@ -225,3 +225,26 @@ def test_adaptation_luminance_modes():
     assert adaptation_luminance(fixed, xyz, white) == 123.0
     with pytest.raises(ValueError, match="daylight"):
         adaptation_luminance(daylight, xyz)
+
+
+def test_spectral_bands_integrate_a_constant_sky_and_are_written(variant, tmp_path):
+    import mitsuba as mi
+
+    from oceanrender.render.scene import band_channel_name, xyz_film
+
+    # A constant environment of 1 W m⁻² sr⁻¹ nm⁻¹: each band's integral is its width.
+    film = xyz_film(4, 4, bands=5)
+    assert [k for k in film if k.startswith("b")] == [band_channel_name(i) for i in range(5)]
+    scene = mi.load_dict({"type": "scene", "integrator": {"type": "path", "max_depth": 1},
+                          "sensor": {"type": "perspective", "film": film,
+                                     "sampler": {"type": "independent", "sample_count": 256}},
+                          "sky": {"type": "constant", "radiance": {"type": "spectrum", "value": 1.0}}})
+    image = np.array(mi.render(scene, seed=1))
+    np.testing.assert_allclose(image[..., 3:].mean(axis=(0, 1)), (830.0 - 360.0) / 5, rtol=0.02)
+    # Through the pipeline: frame_NNNN_spectral.exr with one channel per band, radiance per nm.
+    render_sequence(tiny_scene(output={"spectral_bands": 4, "frames": [0, 1]}), tmp_path, variant)
+    channels, meta = read_exr(tmp_path / "frame_0000_spectral.exr")
+    assert sorted(channels) == ["360.0-477.5nm", "477.5-595.0nm", "595.0-712.5nm", "712.5-830.0nm"]
+    assert meta["band_edges_nm"].split()[0] == "360.000"
+    # Sunsky has no light above 720 nm; the blue-green bands of a daylight sea are lit.
+    assert channels["477.5-595.0nm"].mean() > 10 * channels["712.5-830.0nm"].mean() >= 0

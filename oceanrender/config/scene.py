@@ -40,6 +40,8 @@ class OutputSettings(_Section):
     resolution: tuple[Annotated[int, Field(ge=1, le=16384)], Annotated[int, Field(ge=1, le=16384)]] = (320, 180)
     spp: int = Field(32, ge=1, le=1 << 20, description="samples per pixel")
     directory: str = Field("outputs", min_length=1, description="output root; frames go to <directory>/<scene name>/")
+    spectral_bands: int = Field(0, ge=0, le=470, description="> 0: also write frame_NNNN_spectral.exr with this many "
+                                                             "equal bands of mean radiance over 360-830 nm")
 
     @field_validator("frames")
     @classmethod

@@ -157,6 +157,9 @@ class WaterRenderer:
     scene: object
     params: object
     resolution: tuple[int, int]
+    bands: int = 0
+    #: The last render's spectral bands (H, W, bands), band integrals ∫L dλ [W m⁻² sr⁻¹], or None.
+    last_bands: np.ndarray | None = None
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -185,12 +188,14 @@ class WaterRenderer:
         scene = mi.load_dict({
             "type": "scene",
             "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth, **sun_sampling),
-            "sensor": perspective_sensor(settings.camera, xyz_film(width, height), spp or settings.output.spp),
+            "sensor": perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands),
+                                         spp or settings.output.spp),
             "sky": sunsky_emitter(settings.sun),
             WATER_ID: mesh,
             **(extra_shapes or {}),
         })
-        return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height))
+        return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
+                   bands=settings.output.spectral_bands)
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
@@ -205,7 +210,9 @@ class WaterRenderer:
         import mitsuba as mi  # noqa: PLC0415
 
         film = np.array(mi.render(self.scene, seed=int(seed), spp=int(spp)))
-        return repair_non_finite(film_to_absolute_XYZ(film))
+        if self.bands:
+            self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]
+        return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))
 
 
 def adapting_white_XYZ(settings: Scene, spp: int | None = None, seed: int = 0) -> np.ndarray:

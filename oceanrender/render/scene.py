@@ -46,8 +46,24 @@ def cmf_response_spectra(wavelength_range: tuple[float, float] = FILM_RANGE_NM) 
     }
 
 
-def xyz_film(width: int, height: int) -> dict:
-    """``specfilm`` whose three channels are ∫L x̄ dλ, ∫L ȳ dλ, ∫L z̄ dλ.
+def spectral_band_edges(bands: int, wavelength_range: tuple[float, float] = FILM_RANGE_NM) -> np.ndarray:
+    """Edges [nm] of ``bands`` equal-width bands over the film's range, shape (bands + 1,)."""
+    if int(bands) != bands or bands < 1:
+        raise ValueError(f"bands must be a positive integer, got {bands!r}")
+    return np.linspace(wavelength_range[0], wavelength_range[1], int(bands) + 1)
+
+
+def band_channel_name(index: int) -> str:
+    """Film channel of band ``index``: lower-case, so it sorts after X, Y, Z (Mitsuba orders channels by name)."""
+    return f"b{index:03d}"
+
+
+def xyz_film(width: int, height: int, bands: int = 0) -> dict:
+    """``specfilm`` whose three channels are ∫L x̄ dλ, ∫L ȳ dλ, ∫L z̄ dλ (and optionally ``bands`` more).
+
+    With ``bands`` > 0, channels ∫_{λ_i}^{λ_{i+1}} L dλ over equal bands of the
+    film's range follow (box response functions; :func:`spectral_band_edges`),
+    in W m⁻² sr⁻¹ — divide by the band width for the mean spectral radiance.
 
     With radiance L in W m⁻² sr⁻¹ nm⁻¹ each channel is in W m⁻² sr⁻¹ (CIE-
     weighted); multiply by K_m = 683 lm W⁻¹ for cd m⁻². Channel names sort as
@@ -63,6 +79,14 @@ def xyz_film(width: int, height: int) -> dict:
     }
     for name, values in cmf_response_spectra().items():
         film[name] = {"type": "spectrum", "value": values}
+    if bands:
+        edges = spectral_band_edges(bands)
+        step = 1e-3  # [nm]: the box's edges
+        for i, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+            points = [(lo, 1.0), (hi - step, 1.0), (hi, 0.0)] if i < bands - 1 else [(lo, 1.0), (hi, 1.0)]
+            if i > 0:
+                points.insert(0, (lo - step, 0.0))
+            film[band_channel_name(i)] = {"type": "spectrum", "value": [(float(w), float(v)) for w, v in points]}
     return film
 
 
