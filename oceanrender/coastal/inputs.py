@@ -17,6 +17,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .boundaries import Boundaries, IncidentWave, Transmissive, Wall
+from .mesh import cell_centres as grid_cell_centres
 
 #: EXR channels tried, in order, for a single-valued array.
 EXR_CHANNELS = ("Z", "Y", "R", "V")
@@ -52,9 +53,8 @@ def check_array(array: NDArray, shape: tuple[int, int]) -> NDArray[np.float64]:
 
 
 def cell_centres(coastal) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """World x [m] of the columns and y [m] of the rows."""
-    (dx, dy), (ny, nx) = coastal.spacing, coastal.shape
-    return coastal.origin[0] + (np.arange(nx) + 0.5) * dx, coastal.origin[1] + (np.arange(ny) + 0.5) * dy
+    """World x [m] of the columns and y [m] of the rows (:func:`oceanrender.coastal.mesh.cell_centres`)."""
+    return grid_cell_centres(coastal.shape, coastal.spacing, coastal.origin)
 
 
 def plane_beach(y: NDArray, x: NDArray, still_level: float, shoreline_y: float, slope: float,

@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,6 +34,7 @@ from typing import Callable
 
 import numpy as np
 
+from ..io.frames import atomic_path
 from . import inputs
 from .swe import ShallowWaterSolver, SolverParams, State
 
@@ -68,9 +68,8 @@ def settings_digest(scene) -> str:
 
 
 def _atomic_save_npz(path: Path, **arrays) -> None:
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp.npz")
-    np.savez(tmp, **arrays)
-    os.replace(tmp, path)
+    with atomic_path(path, ".npz") as tmp:
+        np.savez(tmp, **arrays)
 
 
 def frame_field_path(store: Path, frame: int) -> Path:
@@ -131,10 +130,9 @@ def run_simulation(scene, store: str | Path, frames: tuple[int, int] | None = No
         if not same:  # settings changed: everything stored is stale
             for old in list(store.glob("frame_*.npz")) + list(store.glob("frame_*.exr")) + [store / "checkpoint.npz"]:
                 old.unlink(missing_ok=True)
-    tmp = meta_path.with_name(f".{meta_path.name}.tmp")
-    tmp.write_text(json.dumps({"digest": digest, "scene": scene.name, "coastal": coastal.model_dump(),
-                               "version": STORE_VERSION}, indent=2, default=str))
-    os.replace(tmp, meta_path)
+    with atomic_path(meta_path, ".json") as tmp:
+        tmp.write_text(json.dumps({"digest": digest, "scene": scene.name, "coastal": coastal.model_dump(),
+                                   "version": STORE_VERSION}, indent=2, default=str))
 
     found = [f for f in range(start, end) if _fields_ok(frame_field_path(store, f))]
     missing = [f for f in range(start, end) if f not in found]

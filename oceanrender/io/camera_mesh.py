@@ -23,7 +23,6 @@ with D_i the displacement map of cascade i (``oceanrender geometry`` exports the
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 
 import numpy as np
@@ -31,6 +30,7 @@ import numpy as np
 from ..geometry.cascades import cascade_patch_sizes
 from ..geometry.radial_mesh import RadialGrid, radial_body_faces
 from ..geometry.sea import lod_weight
+from .frames import atomic_path
 from .ply import write_ply
 
 
@@ -84,7 +84,6 @@ def export_camera_mesh(scene, out_dir: str | Path) -> tuple[Path, Path]:
     write_ply(ply, positions, faces, normals, comments={"scene": scene.name, "layout": "see camera_mesh.json"})
     table = camera_mesh_table(scene)
     path = out / "camera_mesh.json"
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    tmp.write_text(json.dumps(table, indent=2))
-    os.replace(tmp, path)
+    with atomic_path(path, ".json") as tmp:
+        tmp.write_text(json.dumps(table, indent=2))
     return ply, path

@@ -61,7 +61,7 @@ import numpy as np
 
 from ..config import CameraSettings, Scene
 from ..geometry.body import FrameGeometry
-from ..render.renderer import FOAM_ATTRIBUTE, WATER_ID, mitsuba_floats, water_mesh
+from ..render.renderer import FOAM_ATTRIBUTE, WATER_ID, update_water_parameters, water_mesh
 from ..render.scene import perspective_sensor
 
 #: XYZ → linear Rec. 709 (sRGB primaries, D65), as in Mitsuba's ``xyz_to_srgb`` [3].
@@ -229,11 +229,6 @@ def feature_water_bsdf(water_albedo: float = 1.0, foam_albedo: float | None = No
             "bsdf_1": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(foam_albedo)}}}
 
 
-def feature_water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict):
-    """The water surface as a Mitsuba mesh (id :data:`~oceanrender.render.renderer.WATER_ID`) with ``bsdf``, no medium."""
-    return water_mesh(faces, geometry, bsdf)
-
-
 @dataclass(frozen=True)
 class Features:
     """OIDN's feature images of a frame: albedo (H, W, 3) in [0, 1] [-], shading normal (H, W, 3), world frame."""
@@ -294,7 +289,7 @@ class FeatureRenderer:
 
         width, height = resolution or settings.output.resolution
         foam = settings.foam.albedo if geometry.foam is not None else None
-        mesh = feature_water_mesh(faces, geometry, feature_water_bsdf(water_albedo, foam))
+        mesh = water_mesh(faces, geometry, feature_water_bsdf(water_albedo, foam))  # no medium
         scene = mi.load_dict({
             "type": "scene",
             "integrator": aov_integrator(),
@@ -307,11 +302,7 @@ class FeatureRenderer:
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], normals and foam in place."""
-        self.params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
-        self.params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
-        if geometry.foam is not None:
-            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
-        self.params.update()
+        update_water_parameters(self.params, geometry)
 
     def render(self, seed: int = 0) -> Features:
         """Render the albedo and normal images of the current geometry and camera."""

@@ -131,6 +131,15 @@ def terrain_shape(positions: np.ndarray, faces: np.ndarray, normals: np.ndarray,
     return mesh
 
 
+def update_water_parameters(params, geometry: FrameGeometry) -> None:
+    """Write a frame's vertex positions [m], normals and foam into a loaded scene's water mesh (``mi.traverse``)."""
+    params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
+    params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
+    if geometry.foam is not None:
+        params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
+    params.update()
+
+
 def foamy_surface_bsdf(surface: dict, albedo: float) -> dict:
     """Blend of the water surface and a white diffuse foam layer, weighted per vertex by foam coverage.
 
@@ -199,11 +208,7 @@ class WaterRenderer:
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
-        self.params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
-        self.params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
-        if geometry.foam is not None:
-            self.params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
-        self.params.update()
+        update_water_parameters(self.params, geometry)
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
         """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count)."""

@@ -176,6 +176,17 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
     phase = medium.phase_function()
     n_channels = dr.size_v(mi.Spectrum)
 
+    def through_surface(si, bsdf, sampler, on):
+        """Emitter sampling at a point of the water surface, through its BSDF.
+
+        Returns (f·L_e/p_e [W m⁻² sr⁻¹ nm⁻¹ per unit throughput], p_e, p_s, valid): the
+        emitter-sampling and BSDF-sampling densities of the sampled direction (p_s = 0 for
+        a delta emitter), for the MIS weights of strategies A, B and D.
+        """
+        ds, em = scene.sample_emitter_direction(si, sampler.next_2d(on), True, on)
+        f_y, p_s = bsdf.eval_pdf(ctx, si, si.to_local(ds.d), on)
+        return f_y * em, ds.pdf, dr.select(ds.delta, 0.0, p_s), on & (ds.pdf > 0)
+
     def sun_strategy(vertex, f_and_pdf, beta, sigma_t, sampler, on):
         """Strategy B at an in-water vertex: d ~ q, trace to the surface, emitter sampling there."""
         d, q = sample_lobe(sampler.next_2d(on), sun_v, eta, alpha)
@@ -186,12 +197,10 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
         bsdf_b = si_b.bsdf(ray_b)
         on &= si_b.is_valid() & is_water_surface(bsdf_b)
         transmittance = dr.exp(-sigma_t * si_b.t)
-        ds, em = scene.sample_emitter_direction(si_b, sampler.next_2d(on), True, on)
-        f_y, p_s = bsdf_b.eval_pdf(ctx, si_b, si_b.to_local(ds.d), on)
-        p_s = dr.select(ds.delta, 0.0, p_s)
-        w = _power_heuristic3(q * ds.pdf, p_x * ds.pdf, p_x * p_s)
-        contribution = beta * f_x * transmittance * f_y * em * (w / dr.select(q > 0, q, 1.0))
-        return dr.select(on & (ds.pdf > 0), contribution, 0.0)
+        light, p_e, p_s, valid = through_surface(si_b, bsdf_b, sampler, on)
+        w = _power_heuristic3(q * p_e, p_x * p_e, p_x * p_s)
+        contribution = beta * f_x * transmittance * light * (w / dr.select(q > 0, q, 1.0))
+        return dr.select(valid, contribution, 0.0)
 
     def cond(sampler, ray, beta, L, depth, active, prev_r, prev_in_water, *escape):
         return active
@@ -221,11 +230,9 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
         bsdf = si.bsdf(ray)
         on_surface = active & si.is_valid() & is_water_surface(bsdf)
         connect = on_surface & prev_in_water & mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth)
-        ds, em = scene.sample_emitter_direction(si, sampler.next_2d(connect), True, connect)
-        f_y, p_s = bsdf.eval_pdf(ctx, si, si.to_local(ds.d), connect)
-        p_s = dr.select(ds.delta, 0.0, p_s)
-        w_d = _power_heuristic3(ds.pdf, prev_r * ds.pdf, p_s)
-        L += dr.select(connect & (ds.pdf > 0), beta * dr.exp(-sigma_t * si.t) * f_y * em * w_d, 0.0)
+        light, p_e, p_s, valid = through_surface(si, bsdf, sampler, connect)
+        w_d = _power_heuristic3(p_e, prev_r * p_e, p_s)
+        L += dr.select(valid, beta * dr.exp(-sigma_t * si.t) * light * w_d, 0.0)
 
         tr, free_pdf = medium.transmittance_eval_pdf(mei, si, active)
         pdf_mean = dr.mean(free_pdf)
@@ -260,11 +267,9 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
         # Emitter sampling through the underside of the water surface: only for paths that
         # come from outside the water or off its underside (from an in-water vertex, D did it).
         nee = water & mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth) & ~prev_in_water
-        ds, em = scene.sample_emitter_direction(si, sampler.next_2d(nee), True, nee)
-        f_y, p_s = bsdf.eval_pdf(ctx, si, si.to_local(ds.d), nee)
-        p_s = dr.select(ds.delta, 0.0, p_s)
-        w_a = _power_heuristic3(ds.pdf, prev_r * ds.pdf, p_s)
-        L += dr.select(nee & (ds.pdf > 0), beta * f_y * em * w_a, 0.0)
+        light, p_e, p_s, valid = through_surface(si, bsdf, sampler, nee)
+        w_a = _power_heuristic3(p_e, prev_r * p_e, p_s)
+        L += dr.select(valid, beta * light * w_a, 0.0)
 
         # BSDF sampling at surfaces.
         sample_surface = water | opaque
