@@ -134,6 +134,7 @@ class SequenceReport:
     repaired_pixels: int = 0
     setup_seconds: float = 0.0
     simulation: object = None  # coastal scenes: the SimulationReport of the run
+    failed: list = field(default_factory=list)  # distributed runs: frames whose task failed on every try
     stage_seconds: dict[str, float] = field(default_factory=lambda: {s: 0.0 for s in STAGES})
 
     @property
@@ -145,7 +146,12 @@ class Sequence:
     """A scene prepared for rendering frames: ocean, renderer, adapting white.
 
     Building it loads the Mitsuba scene once; :meth:`render_frame` then only
-    updates the water mesh.
+    updates the water mesh, and, in an animated scene (``[[camera.keys]]``,
+    ``[[sun.keys]]`` or ``[sun.clock]``), points the camera and the sun for
+    the frame's time (:meth:`point`): the sky's and the ``split``
+    integrator's sun, the adapting white (re-measured in a white-plane scene
+    kept loaded) and the in-water clamp, which is a multiple of that white.
+    Nothing is reloaded or recompiled (the integrator's sun is opaque).
     """
 
     def __init__(self, scene: Scene, variant: str, spp: int | None = None, resolution: tuple[int, int] | None = None,
@@ -170,13 +176,57 @@ class Sequence:
         self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self.roughness = surface_roughness(scene, self.body)
         self.sun_lobe_alpha = sun_lobe_alpha(scene, self.body, self.roughness)
-        self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
+        from .production.animation import SunAngles, camera_motion, static_camera_pose, sun_motion  # noqa: PLC0415
+
+        self.camera_path = camera_motion(scene)
+        self.sun_path = sun_motion(scene)
+        #: The camera pose and sun angles of the frame last pointed at (:meth:`point`).
+        self.pose = static_camera_pose(scene)
+        self.sun_angles = SunAngles(scene.sun.elevation, scene.sun.azimuth % 360.0)
+        self.white_meter = None
+        self._white_frame: int | None = None
+        if self.sun_path is not None:
+            from .render.renderer import WhiteMeter  # noqa: PLC0415
+
+            self.white_meter = WhiteMeter(scene)
+            self.sun_angles = self.sun_path.at(self.time_of(first_frame))
+            self._measure_white(first_frame)
+        else:
+            self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
         self.in_water_clamp = scene.render.in_water_clamp * white_mean_radiance(self.white_xyz)
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
                                             in_water_clamp=self.in_water_clamp,
                                             sun_lobe_alpha=self.sun_lobe_alpha, extra_shapes=self.body.extra_shapes(),
                                             spp=self.spp, resolution=self.resolution)
         self.vision = vision_for_scene(scene)
+
+    def _measure_white(self, frame: int) -> None:
+        """The adapting white [cd m⁻²] under the sun of ``frame`` (:attr:`sun_angles`), measured once per frame."""
+        if self._white_frame != frame:
+            self.white_meter.point_sun(*self.sun_angles)
+            # Same seed every frame, as for a still sun: a frame's white depends on its time alone.
+            self.white_xyz = self.white_meter.measure(seed=self.scene.render.seed)
+            self._white_frame = frame
+
+    def point(self, frame: int) -> None:
+        """Point the camera and the sun at their poses of ``frame``'s time (animated scenes; else nothing).
+
+        Moves the sensor (``apply_camera``), the ``sunsky`` sun and the
+        ``split`` integrator's sun, re-measures the adapting white and sets
+        the in-water clamp to ``render.in_water_clamp`` × that white's mean
+        radiance. The water mesh follows the camera in :meth:`geometry`.
+        """
+        t = self.time_of(frame)
+        if self.camera_path is not None:
+            self.pose = self.camera_path.at(t)
+            self.renderer.point_camera(*self.pose)
+        if self.sun_path is not None:
+            self.sun_angles = self.sun_path.at(t)
+            self._measure_white(frame)
+            self.in_water_clamp = self.scene.render.in_water_clamp * white_mean_radiance(self.white_xyz)
+            self.renderer.point_sun(*self.sun_angles)
+            if self.in_water_clamp > 0:
+                self.renderer.set_in_water_clamp(self.in_water_clamp)
 
     def time_of(self, frame: int) -> float:
         """Frame time t = frame / fps [s]."""
@@ -207,13 +257,32 @@ class Sequence:
             "surface_roughness_beckmann_alpha": self.roughness,
             "sun_lobe_beckmann_alpha": self.sun_lobe_alpha if self.scene.render.sun_sampling else 0.0,
             "in_water_clamp_W_m2_sr_nm": self.in_water_clamp,
+            "camera_position_m": " ".join(f"{v:.6g}" for v in self.pose.position),
+            "camera_target_m": " ".join(f"{v:.6g}" for v in self.pose.target),
+            "camera_fov_deg": f"{self.pose.fov:.6g}",
+            "camera_motion": f"keys ({self.camera_path.interpolation})" if self.camera_path is not None else "still",
+            "sun_elevation_deg": f"{self.sun_angles.elevation:.6g}",
+            "sun_azimuth_deg": f"{self.sun_angles.azimuth:.6g}",
+            "sun_motion": self._sun_motion_label(),
             "denoiser": "Intel Open Image Denoise (pyoidn), colour only, HDR" if self.scene.render.denoise else "none",
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
 
-    def render_frame(self, frame: int, paths: FramePaths, seconds: dict[str, float]) -> int:
-        """Render, adapt and write one frame; returns the count of repaired pixels."""
+    def _sun_motion_label(self) -> str:
+        if self.scene.sun.clock is not None:
+            c = self.scene.sun.clock
+            return (f"clock (NOAA) at {c.latitude:g} N {c.longitude:g} E from {c.start.isoformat()}, "
+                    f"time_scale {c.time_scale:g}")
+        return f"keys ({self.scene.sun.interpolation})" if self.scene.sun.keys else "still"
+
+    def compute_frame(self, frame: int, seconds: dict[str, float] | None = None) -> RenderedFrame:
+        """Geometry, render, denoise and vision model of one frame, in memory (nothing written).
+
+        ``seconds`` (stage → s) is added to when given; the frame's own stage
+        times are also in :attr:`RenderedFrame.seconds`.
+        """
+        own = {stage: 0.0 for stage in STAGES}
         tic = time.perf_counter()
         if self._loaded is not None and self._loaded[0] == frame:
             geometry = self._loaded[1]
@@ -221,33 +290,79 @@ class Sequence:
             geometry = self.geometry(frame)
         self._loaded = None
         tac = time.perf_counter()
-        seconds["geometry"] += tac - tic
+        own["geometry"] += tac - tic
+        self.point(frame)
         self.renderer.update_water(geometry)
         tic = time.perf_counter()
-        seconds["update"] += tic - tac
+        own["update"] += tic - tac
         xyz, repaired = self.renderer.render_xyz(self.spp, seed=self.scene.render.seed + frame)
         tac = time.perf_counter()
-        seconds["render"] += tac - tic
+        own["render"] += tac - tic
         if self.scene.render.denoise:
             from .production.denoise import denoise_XYZ  # noqa: PLC0415
 
             xyz = denoise_XYZ(xyz)
             tic, tac = tac, time.perf_counter()
-            seconds["denoise"] += tac - tic
+            own["denoise"] += tac - tic
         adaptation = adaptation_luminance(self.scene, xyz, self.white_xyz)
         rgb = self.vision.apply(xyz, self.white_xyz, adaptation)
-        rgb8 = encode_sRGB_8bit(rgb)
-        tic = time.perf_counter()
-        seconds["vision"] += tic - tac
+        metadata = self.metadata(frame, repaired, adaptation)
+        spectral = None
         if self.renderer.bands and self.renderer.last_bands is not None:
-            write_exr(paths.exr.with_name(paths.exr.stem + "_spectral.exr"),
-                      *spectral_frame(self.renderer.last_bands, self.metadata(frame, repaired, adaptation)))
-        channels = {name: xyz[..., i] for i, name in enumerate("XYZ")}
-        channels.update({name: rgb[..., i] for i, name in enumerate("RGB")})
-        write_exr(paths.exr, channels, self.metadata(frame, repaired, adaptation))
-        write_png(paths.png, rgb8)
-        seconds["write"] += time.perf_counter() - tic
-        return repaired
+            spectral = spectral_frame(self.renderer.last_bands, metadata)
+        channels = {name: np.asarray(xyz[..., i], np.float32) for i, name in enumerate("XYZ")}
+        channels.update({name: np.asarray(rgb[..., i], np.float32) for i, name in enumerate("RGB")})
+        rendered = RenderedFrame(frame=frame, channels=channels, metadata=metadata, rgb8=encode_sRGB_8bit(rgb),
+                                 spectral=spectral, repaired=repaired, seconds=own)
+        own["vision"] += time.perf_counter() - tac
+        if seconds is not None:
+            for stage, value in own.items():
+                seconds[stage] += value
+        return rendered
+
+    def render_frame(self, frame: int, paths: FramePaths, seconds: dict[str, float]) -> int:
+        """Render, adapt and write one frame; returns the count of repaired pixels."""
+        rendered = self.compute_frame(frame, seconds)
+        seconds["write"] += write_frame(paths, rendered)
+        return rendered.repaired
+
+
+@dataclass(frozen=True)
+class RenderedFrame:
+    """One finished frame in memory, ready to be written (or sent from a worker to the writer).
+
+    Attributes
+    ----------
+    frame : int
+    channels : dict of (H, W) float32   X, Y, Z absolute [cd m⁻² for Y]; R, G, B linear display sRGB.
+    metadata : dict                      The EXR header attributes.
+    rgb8 : (H, W, 3) uint8               The display frame (PNG).
+    spectral : (channels, metadata) or None   The optional spectral EXR (:func:`spectral_frame`).
+    repaired : int                       Non-finite pixels repaired from their neighbours.
+    seconds : dict                       This frame's time per stage [s] (``"write"`` excluded).
+    """
+
+    frame: int
+    channels: dict
+    metadata: dict
+    rgb8: np.ndarray
+    spectral: tuple | None
+    repaired: int
+    seconds: dict
+
+
+def write_frame(paths: FramePaths, rendered: RenderedFrame) -> float:
+    """Write a frame's EXR (and spectral EXR) and PNG, each atomically; returns the seconds taken.
+
+    The PNG is written last: :func:`~oceanrender.io.frames.frame_is_complete`
+    needs both, so a frame interrupted between the two is rendered again.
+    """
+    tic = time.perf_counter()
+    if rendered.spectral is not None:
+        write_exr(paths.exr.with_name(paths.exr.stem + "_spectral.exr"), *rendered.spectral)
+    write_exr(paths.exr, rendered.channels, rendered.metadata)
+    write_png(paths.png, rendered.rgb8)
+    return time.perf_counter() - tic
 
 
 def remove_stale_temporaries(out_dir: str | Path) -> list[Path]:
@@ -283,6 +398,37 @@ def coastal_store(out_dir: str | Path) -> Path:
     return Path(out_dir) / "coastal"
 
 
+def frames_to_render(out_dir: str | Path, frames: tuple[int, int], size: tuple[int, int], report: SequenceReport,
+                     on_frame: Callable[[int, float, bool], None] | None = None) -> list[int]:
+    """The frames of [start, end) not yet intact in ``out_dir`` (the others go to ``report.skipped``).
+
+    Deletes the temporaries a killed run left first; ``on_frame(frame, 0, True)``
+    is called for each frame skipped.
+    """
+    remove_stale_temporaries(out_dir)
+    todo = []
+    for frame in range(*frames):
+        paths = frame_paths(out_dir, frame)
+        if frame_is_complete(paths.exr, paths.png, size):
+            report.skipped.append(frame)
+            if on_frame:
+                on_frame(frame, 0.0, True)
+        else:
+            todo.append(frame)
+    return todo
+
+
+def simulate_coastal(scene: Scene, out_dir: str | Path, todo: list[int], report: SequenceReport) -> Path | None:
+    """Run (or resume) a coastal scene's simulation up to its last frame to render; its store, or None (open sea)."""
+    if scene.coastal is None:
+        return None
+    from .coastal.simulation import run_simulation  # noqa: PLC0415
+
+    store = coastal_store(out_dir).resolve()
+    report.simulation = run_simulation(scene, store, (todo[0], todo[-1] + 1))
+    return store
+
+
 def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tuple[int, int] | None = None,
                     spp: int | None = None, resolution: tuple[int, int] | None = None,
                     on_frame: Callable[[int, float, bool], None] | None = None) -> SequenceReport:
@@ -292,28 +438,13 @@ def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tup
     run loses at most the frame in flight. ``on_frame(frame, seconds, skipped)``
     is called after each frame (for progress display).
     """
-    start, end = frames or scene.output.frames
     size = tuple(resolution or scene.output.resolution)
     report = SequenceReport(variant=variant)
-    remove_stale_temporaries(out_dir)
-    todo = []
-    for frame in range(start, end):
-        paths = frame_paths(out_dir, frame)
-        if frame_is_complete(paths.exr, paths.png, size):
-            report.skipped.append(frame)
-            if on_frame:
-                on_frame(frame, 0.0, True)
-        else:
-            todo.append(frame)
+    todo = frames_to_render(out_dir, frames or scene.output.frames, size, report, on_frame)
     if not todo:
         return report
     tic = time.perf_counter()
-    store = None
-    if scene.coastal is not None:
-        from .coastal.simulation import run_simulation  # noqa: PLC0415
-
-        store = coastal_store(out_dir)
-        report.simulation = run_simulation(scene, store, (todo[0], todo[-1] + 1))
+    store = simulate_coastal(scene, out_dir, todo, report)
     sequence = Sequence(scene, variant, spp=spp, resolution=size, first_frame=todo[0], coastal_store=store)
     report.setup_seconds = time.perf_counter() - tic
     for frame in todo:

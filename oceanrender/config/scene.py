@@ -16,7 +16,7 @@ import tomllib
 from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 
 class SceneError(ValueError):
@@ -205,8 +205,83 @@ class CompositionSettings(_Section):
     cdom_slope_per_nm: float | None = Field(None, ge=0.005, le=0.03, description="CDOM spectral slope [nm⁻¹]")
 
 
+#: Interpolations of keyframed motion (see :mod:`oceanrender.production.animation`).
+Interpolation = Literal["monotone cubic", "Catmull-Rom"]
+
+
+def _first_key_fills(data, fields: dict[str, object], section: str) -> dict:
+    """Fill the static keys of an animated section from its motion; refuse ones that contradict it.
+
+    ``fields`` maps each static key to its value from the motion. A value
+    written in the file must equal it (to 1e-9), so that a file, and the
+    same settings dumped and validated again (:func:`with_overrides`), mean
+    one thing.
+    """
+    data = dict(data)
+    for name, value in fields.items():
+        given = data.get(name)
+        if given is None:
+            data[name] = value
+            continue
+        try:
+            same = all(abs(float(a) - float(b)) <= 1e-9 * max(1.0, abs(float(b)))
+                       for a, b in zip(_as_tuple(given), _as_tuple(value), strict=True))
+        except (TypeError, ValueError):
+            same = False
+        if not same:
+            raise ValueError(f"{name} = {given!r} contradicts the motion, which gives {value!r} here; "
+                             f"leave {name} out when [{section}] is animated")
+    return data
+
+
+def _as_tuple(value) -> tuple:
+    return tuple(value) if isinstance(value, (list, tuple)) else (value,)
+
+
+def _key_value(key, name: str):
+    return key.get(name) if isinstance(key, dict) else getattr(key, name, None)
+
+
+class SunKeySettings(_Section):
+    """One sun keyframe (``[[sun.keys]]``)."""
+
+    time: float = Field(..., ge=-1.0e6, le=1.0e6, description="key time, t = frame / fps [s]")
+    elevation: float = Field(..., gt=0, le=90, description="sun elevation above the horizon at the key [deg]")
+    azimuth: float = Field(..., ge=-720, le=720, description="sun azimuth clockwise from north (+y) [deg]; "
+                                                             "write 350 then 370 to pass through north")
+
+
+class SolarClockSettings(_Section):
+    """The sun over a place as a clock runs (``[sun.clock]``): NOAA solar position at start + time_scale·t."""
+
+    latitude: float = Field(..., ge=-90, le=90, description="geographic latitude, north positive [deg]")
+    longitude: float = Field(..., ge=-180, le=180, description="longitude, east positive [deg]")
+    start: AwareDatetime = Field(..., description="clock instant of scene time t = 0, ISO 8601 with a UTC offset, "
+                                                  "e.g. 2024-06-21T18:30:00+02:00")
+    time_scale: float = Field(1.0, ge=-1.0e6, le=1.0e6,
+                              description="simulated (clock) seconds per scene second [-]; 600 = 10 min per second")
+    apparent: bool = Field(True, description="use the refracted (apparent) elevation, as seen, or the geometric one")
+    pressure: float = Field(1010.0, gt=0, le=1100, description="surface pressure for the refraction [hPa]")
+    temperature: float = Field(10.0, ge=-90, le=60, description="air temperature for the refraction [°C]")
+
+    def angles_at(self, t: float) -> tuple[float, float]:
+        """(elevation, azimuth) of the sun at scene time t [s] [deg]."""
+        from ..production.animation import SolarClock  # noqa: PLC0415
+
+        clock = SolarClock(self.latitude, self.longitude, self.start, self.time_scale, self.apparent,
+                           self.pressure, self.temperature)
+        return tuple(clock.at(t))
+
+
 class SunSettings(_Section):
-    """Sun and sky: Mitsuba's ``sunsky`` (Hosek & Wilkie 2012/2013)."""
+    """Sun and sky: Mitsuba's ``sunsky`` (Hosek & Wilkie 2012/2013).
+
+    The sun may move: ``[[sun.keys]]`` (at least two keyframes of elevation
+    and azimuth, joined by ``interpolation``) or ``[sun.clock]`` (a place and
+    a clock), not both. Then ``elevation`` and ``azimuth`` are those of the
+    motion at its first key (keys) or at t = 0 s (clock); leave them out (if
+    written they must equal those).
+    """
 
     elevation: float = Field(40.0, gt=0, le=90, description="sun elevation above the horizon [deg]")
     azimuth: float = Field(200.0, ge=-360, le=360, description="sun azimuth, clockwise from north (+y) [deg]")
@@ -214,20 +289,126 @@ class SunSettings(_Section):
     ground_albedo: float = Field(0.1, ge=0, le=1, description="ground albedo of the sky model [-]")
     sun_scale: float = Field(1.0, ge=0, description="scale of the solar radiance [-]")
     sky_scale: float = Field(1.0, ge=0, description="scale of the sky radiance [-]")
+    keys: tuple[SunKeySettings, ...] = Field((), description="sun keyframes (time [s], elevation, azimuth [deg])")
+    clock: SolarClockSettings | None = Field(None, description="a place and a clock instead of keyframes")
+    interpolation: Interpolation = Field("monotone cubic", description="curve through the sun keyframes")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _static_from_motion(cls, data):
+        if not isinstance(data, dict):
+            return data
+        keys, clock = data.get("keys") or (), data.get("clock")
+        if keys and clock is not None:
+            raise ValueError("give either [[sun.keys]] or [sun.clock], not both")
+        if keys and isinstance(keys, (list, tuple)):
+            first = keys[0]
+            elevation, azimuth = _key_value(first, "elevation"), _key_value(first, "azimuth")
+            # NOTE: a key out of range is reported with its own key path, not through the static fields.
+            if (isinstance(elevation, (int, float)) and isinstance(azimuth, (int, float))
+                    and 0 < elevation <= 90 and -720 <= azimuth <= 720):
+                return _first_key_fills(data, {"elevation": float(elevation),
+                                               "azimuth": float(azimuth) % 360.0}, "sun")
+        if clock is not None:
+            try:
+                settings = SolarClockSettings.model_validate(clock)
+            except ValidationError:
+                return data  # reported with its key when the field itself is validated
+            elevation, azimuth = settings.angles_at(0.0)
+            if not elevation > 0:
+                raise ValueError(f"[sun.clock]: the sun is below the horizon at start ({settings.start.isoformat()}, "
+                                 f"t = 0 s): elevation {elevation:.2f} deg; sunsky needs it above")
+            return _first_key_fills(data, {"elevation": elevation, "azimuth": azimuth}, "sun")
+        return data
+
+    @field_validator("keys")
+    @classmethod
+    def _key_times(cls, value: tuple[SunKeySettings, ...]) -> tuple[SunKeySettings, ...]:
+        if value:
+            _check_key_times([key.time for key in value], "sun")
+        return value
+
+    @property
+    def animated(self) -> bool:
+        """Whether the sun moves (keys or a clock)."""
+        return bool(self.keys) or self.clock is not None
+
+
+def _check_key_times(times: list[float], section: str) -> None:
+    if len(times) < 2:
+        raise ValueError(f"[[{section}.keys]] needs at least 2 keyframes, got {len(times)}")
+    for i in range(1, len(times)):
+        if not times[i] > times[i - 1]:
+            raise ValueError(f"key times must strictly increase, but key {i + 1} at time = {times[i]:g} s "
+                             f"follows time = {times[i - 1]:g} s")
+
+
+class CameraKeySettings(_Section):
+    """One camera keyframe (``[[camera.keys]]``)."""
+
+    time: float = Field(..., ge=-1.0e6, le=1.0e6, description="key time, t = frame / fps [s]")
+    position: Vec3 = Field(..., description="camera position [m]")
+    target: Vec3 = Field(..., description="point looked at [m]")
+    fov: float = Field(..., gt=0, lt=180, description="horizontal field of view [deg]")
+
+    @model_validator(mode="after")
+    def _distinct(self) -> "CameraKeySettings":
+        if self.position == self.target:
+            raise ValueError(f"camera key at time = {self.time:g} s: target must differ from position")
+        return self
 
 
 class CameraSettings(_Section):
-    """Pinhole camera (perspective)."""
+    """Pinhole camera (perspective).
+
+    The camera may move: ``[[camera.keys]]``, at least two keyframes of
+    position, target and fov at strictly increasing times, joined by
+    ``interpolation``. Then ``position``, ``target`` and ``fov`` are the
+    first key's; leave them out (if written they must equal it).
+    """
 
     position: Vec3 = (0.0, 0.0, 5.0)
     target: Vec3 = (0.0, 40.0, 0.0)
     fov: float = Field(60.0, gt=0, lt=180, description="horizontal field of view [deg]")
+    keys: tuple[CameraKeySettings, ...] = Field((), description="camera keyframes (time [s], position, target [m], "
+                                                                "fov [deg])")
+    interpolation: Interpolation = Field("monotone cubic", description="curve through the camera keyframes")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _static_from_keys(cls, data):
+        if not isinstance(data, dict) or not data.get("keys") or not isinstance(data["keys"], (list, tuple)):
+            return data
+        first = data["keys"][0]
+        values = {name: _key_value(first, name) for name in ("position", "target", "fov")}
+        if any(value is None for value in values.values()):
+            return data  # the key itself is reported as incomplete
+        try:
+            values = {"position": tuple(map(float, values["position"])),
+                      "target": tuple(map(float, values["target"])), "fov": float(values["fov"])}
+        except (TypeError, ValueError):
+            return data
+        if not 0 < values["fov"] < 180 or len(values["position"]) != 3 or len(values["target"]) != 3:
+            return data  # reported with the key's own path
+        return _first_key_fills(data, values, "camera")
+
+    @field_validator("keys")
+    @classmethod
+    def _key_times(cls, value: tuple[CameraKeySettings, ...]) -> tuple[CameraKeySettings, ...]:
+        if value:
+            _check_key_times([key.time for key in value], "camera")
+        return value
 
     @model_validator(mode="after")
     def _distinct(self) -> "CameraSettings":
         if self.position == self.target:
             raise ValueError("camera target must differ from its position")
         return self
+
+    @property
+    def animated(self) -> bool:
+        """Whether the camera moves (keys)."""
+        return bool(self.keys)
 
 
 class VisionSettings(_Section):
@@ -341,6 +522,37 @@ class Scene(_Section):
     camera: CameraSettings = CameraSettings()
     vision: VisionSettings = VisionSettings()
 
+    @field_validator("camera")
+    @classmethod
+    def _camera_over_frames(cls, value: CameraSettings, info) -> CameraSettings:
+        output = info.data.get("output")
+        if value.animated and output is not None:
+            from ..production.animation import frame_times, scene_camera_path  # noqa: PLC0415
+
+            path = scene_camera_path(value)
+            for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
+                try:
+                    path.at(t)
+                except ValueError as exc:
+                    raise ValueError(f"[[camera.keys]] at frame {frame}: {exc}") from None
+        return value
+
+    @field_validator("sun")
+    @classmethod
+    def _sun_over_frames(cls, value: SunSettings, info) -> SunSettings:
+        output = info.data.get("output")
+        if value.animated and output is not None:
+            from ..production.animation import frame_times, scene_sun_motion  # noqa: PLC0415
+
+            motion = scene_sun_motion(value)
+            where = "[sun.clock]" if value.clock is not None else "[[sun.keys]]"
+            for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
+                elevation = motion.at(t).elevation
+                if not elevation > 0:
+                    raise ValueError(f"{where}: the sun is below the horizon at frame {frame} (t = {t:g} s): "
+                                     f"elevation {elevation:.2f} deg; sunsky needs it above over the frame range")
+        return value
+
     @field_validator("composition")
     @classmethod
     def _one_water(cls, value, info):
@@ -375,8 +587,20 @@ def _field_help(location: tuple) -> str | None:
         if not fields or item not in fields:
             return None
         info = fields[item]
-        model = info.annotation if isinstance(info.annotation, type) else None
+        model = _section_model(info.annotation)
     return info.description if info is not None else None
+
+
+def _section_model(annotation) -> type[BaseModel] | None:
+    """The section model of a field's annotation: ``Model``, ``Model | None`` or ``tuple[Model, ...]``."""
+    from typing import get_args  # noqa: PLC0415
+
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in get_args(annotation):
+        if isinstance(arg, type) and issubclass(arg, BaseModel):
+            return arg
+    return None
 
 
 def _describe(error: dict) -> str:

@@ -5,11 +5,15 @@ closed box (:mod:`.mesh`), and ``"radial"``, a camera-centred polar grid out
 to the horizon (:mod:`.radial_mesh`). Foam, when enabled, is a per-vertex
 coverage in [0, 1] accumulated from the folding of the surface over a window
 of history before each frame, so every frame follows from (scene, t) alone.
+
+With a moving camera (``[[camera.keys]]``) the radial grid follows it: at
+time t its rest points are the grid translated to the camera's (x, y) at t;
+the triangles never change.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -49,7 +53,11 @@ class WaterBody:
         self.scene = scene
         self.sea = SeaSurface(scene.ocean)
         mesh = scene.mesh
+        self.camera_path = None
         if mesh.kind == "radial":
+            from ..production.animation import camera_motion  # noqa: PLC0415
+
+            self.camera_path = camera_motion(scene)
             center = (scene.camera.position[0], scene.camera.position[1])
             self.radial = RadialGrid.square_cells(center, mesh.inner_radius, mesh.outer_radius, mesh.segments)
             self.faces = radial_body_faces(self.radial.rings, self.radial.segments)
@@ -85,12 +93,29 @@ class WaterBody:
         """Other Mitsuba shapes of the scene (none for the open sea)."""
         return {}
 
+    def grid_at(self, t: float) -> RadialGrid | None:
+        """The radial grid of time t [s]: centred under the camera at t (None for the patch mesh)."""
+        if self.radial is None or self.camera_path is None:
+            return self.radial
+        x, y = self.camera_path.at(t).position[:2]
+        return replace(self.radial, center=(float(x), float(y)))
+
+    def rest_points(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Rest positions (x, y) of the surface vertices at time t [s] [m]."""
+        if self.camera_path is None:
+            return self.rest_x, self.rest_y
+        x, y = self.grid_at(t).points.T
+        return x, y
+
     def surface(self, t: float) -> SurfacePoints:
         """The displaced surface at the mesh's rest points at time t [s]."""
-        return self.sea.sample(self.rest_x, self.rest_y, t, self.spacing)
+        return self.sea.sample(*self.rest_points(t), t, self.spacing)
 
     def foam(self, t: float, jacobian_now: NDArray | None = None) -> NDArray[np.float64]:
-        """Foam coverage at the rest points at t [s], accumulated over the preceding history.
+        """Foam coverage at the rest points of time t [s], accumulated over the preceding history.
+
+        With a moving radial grid the history is accumulated at the rest
+        points of time t (fixed points of the sea), not along the grid's path.
 
         The accumulation (:func:`~oceanrender.geometry.foam.foam_step`) starts
         from clear water ``history × decay_time`` before t and advances in steps
@@ -101,12 +126,13 @@ class WaterBody:
         window = foam.history * foam.decay_time
         steps = int(min(FOAM_STEPS, max(2, np.ceil(2 * foam.history))))
         times = t - window + window * np.arange(1, steps + 1) / steps
-        coverage = np.zeros(np.shape(self.rest_x))
+        rest_x, rest_y = self.rest_points(t)
+        coverage = np.zeros(np.shape(rest_x))
         for i, step_time in enumerate(times):
             if i == steps - 1 and jacobian_now is not None:
                 jacobian = jacobian_now  # the last step is t itself: reuse the frame's own J
             else:
-                jacobian = self.sea.jacobian(self.rest_x, self.rest_y, float(step_time), self.spacing)
+                jacobian = self.sea.jacobian(rest_x, rest_y, float(step_time), self.spacing)
             coverage = foam_step(coverage, jacobian, window / steps, foam.threshold, foam.decay_time, foam.gain)
         return coverage
 
@@ -115,7 +141,7 @@ class WaterBody:
         depth = self.scene.water.depth
         surface = self.surface(t)
         if self.radial is not None:
-            positions, normals = radial_body_vertices(self.radial, surface.displacement, surface.normals, depth)
+            positions, normals = radial_body_vertices(self.grid_at(t), surface.displacement, surface.normals, depth)
         else:
             d = surface.displacement
             fields = OceanFields(d[..., 2], d[..., 0], d[..., 1], np.zeros_like(d[..., 0]), np.zeros_like(d[..., 0]),

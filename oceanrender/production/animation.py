@@ -69,10 +69,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
-from typing import Callable, NamedTuple, Protocol, Sequence
+from typing import TYPE_CHECKING, Callable, NamedTuple, Protocol, Sequence
 
 import numpy as np
 from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
+
+if TYPE_CHECKING:
+    from ..config.scene import CameraSettings, Scene, SunSettings
 
 # ---------------------------------------------------------------------------
 # Interpolation: C¹ piecewise cubic Hermite curves through keyframes.
@@ -581,3 +584,43 @@ def utc(year: int, month: int, day: int, hour: int = 0, minute: int = 0, second:
     whole = int(second)
     return datetime(year, month, day, hour, minute, whole, int(round((second - whole) * 1e6)),
                     tzinfo=timezone(timedelta(hours=offset_hours)))
+
+
+# ---------------------------------------------------------------------------
+# The motion a scene file describes ([[camera.keys]], [[sun.keys]], [sun.clock]).
+# ---------------------------------------------------------------------------
+
+
+def scene_camera_path(camera: "CameraSettings") -> CameraPath | None:
+    """The :class:`CameraPath` of a ``[camera]`` section with ``[[camera.keys]]``, else None."""
+    if not camera.keys:
+        return None
+    keys = tuple(CameraKey(key.time, key.position, key.target, key.fov) for key in camera.keys)
+    return CameraPath(keys, interpolation=camera.interpolation)
+
+
+def scene_sun_motion(sun: "SunSettings") -> SunMotion | None:
+    """The sun motion of a ``[sun]`` section: a :class:`SunPath` (keys), a :class:`SolarClock` (clock) or None."""
+    if sun.keys:
+        return SunPath(tuple(SunKey(key.time, key.elevation, key.azimuth) for key in sun.keys),
+                       interpolation=sun.interpolation)
+    if sun.clock is not None:
+        c = sun.clock
+        return SolarClock(c.latitude, c.longitude, c.start, c.time_scale, c.apparent, c.pressure, c.temperature)
+    return None
+
+
+def camera_motion(scene: "Scene") -> CameraPath | None:
+    """The scene's camera path, or None for a still camera."""
+    return scene_camera_path(scene.camera)
+
+
+def sun_motion(scene: "Scene") -> SunMotion | None:
+    """The scene's sun motion, or None for a still sun."""
+    return scene_sun_motion(scene.sun)
+
+
+def static_camera_pose(scene: "Scene") -> CameraPose:
+    """The still camera of a scene without keys: ``[camera]`` position [m], target [m], fov [deg]."""
+    c = scene.camera
+    return CameraPose(np.array(c.position, dtype=float), np.array(c.target, dtype=float), float(c.fov))

@@ -116,6 +116,8 @@ def split_surface_integrator_class() -> type:
 
 
 def _define_class() -> type:
+    import math  # noqa: PLC0415
+
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 
@@ -180,10 +182,17 @@ def _define_class() -> type:
                 raise ValueError(f"rr_depth must be ≥ 1, got {self.rr_depth}")
             # A split needs a bounce after the first vertex: max_depth ≥ 2 (or unbounded).
             self.splits = self.max_depth < 0 or self.max_depth >= 2
+            # NOTE: the sun and the clamp are opaque Dr.Jit values (kernel parameters), not Python
+            # floats, which a traced kernel would bake in as literals: a sun that moves between
+            # frames (set_sun) would then recompile the render kernel every frame.
             self.sun = None
-            self.in_water_clamp = float(props.get("in_water_clamp", 0.0))
+            clamp = float(props.get("in_water_clamp", 0.0))
+            self.clamps = clamp > 0  # whether to clamp at all is part of the kernel's structure
+            self.in_water_clamp = None
+            if self.clamps:
+                self.set_in_water_clamp(clamp)
             if "sun_z" in props:
-                self.sun = (float(props["sun_x"]), float(props["sun_y"]), float(props["sun_z"]))
+                self.set_sun((float(props["sun_x"]), float(props["sun_y"]), float(props["sun_z"])))
                 self.water_ior = float(props.get("water_ior", 1.333))
                 self.sun_lobe_alpha = float(props.get("sun_lobe_alpha", 0.2))
             hide = bool(self.hide_emitters)  # NOTE: a bool attribute in Python, not a method
@@ -195,6 +204,31 @@ def _define_class() -> type:
                 inner_rr = max(self.rr_depth - 1, 1)
                 self.reflected = self._volpath(inner_depth, inner_rr, hide_emitters=True)
                 self.transmitted = self._volpath(inner_depth, inner_rr, hide_emitters=False)
+
+        def set_sun(self, direction) -> None:
+            """Point the in-water sun sampling at ``direction`` (unit vector towards the sun, z up), no recompile.
+
+            Only for an integrator built with a sun (``sun_x/y/z``): turning sun sampling on
+            or off changes the kernel.
+            """
+            d = [float(c) for c in direction]
+            if len(d) != 3 or not abs(math.hypot(*d) - 1.0) < 1e-4:
+                raise ValueError(f"the sun direction must be a unit 3-vector, got {direction!r}")
+            if self.sun is None and hasattr(self, "full"):
+                raise ValueError("this integrator was built without in-water sun sampling; cannot set a sun")
+            sun = mi.Vector3f(*d)
+            dr.make_opaque(sun)
+            self.sun = sun
+
+        def set_in_water_clamp(self, value: float) -> None:
+            """Set the in-water firefly clamp [W m⁻² sr⁻¹ nm⁻¹] (> 0; built with a clamp), no recompile."""
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"in_water_clamp must be finite and > 0 [W m⁻² sr⁻¹ nm⁻¹], got {value!r}")
+            if not self.clamps:
+                raise ValueError("this integrator was built without an in-water clamp (0 = off); cannot set one")
+            clamp = mi.Float(float(value))
+            dr.make_opaque(clamp)
+            self.in_water_clamp = clamp
 
         @staticmethod
         def _volpath(max_depth, rr_depth, hide_emitters):
@@ -225,7 +259,7 @@ def _define_class() -> type:
                                        alpha=self.sun_lobe_alpha, max_depth=depth,
                                        rr_depth=max(self.rr_depth - 1, 1))
             L += escaped_radiance(scene, sampler, self.reflected, escape)
-            if self.in_water_clamp > 0:
+            if self.clamps:
                 # NOTE: a stated, biased firefly clamp (scene setting render.in_water_clamp).
                 L = dr.minimum(L, self.in_water_clamp)
             return dr.select(active, L, 0.0)

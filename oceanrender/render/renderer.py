@@ -206,6 +206,32 @@ class WaterRenderer:
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
                    bands=settings.output.spectral_bands)
 
+    def point_camera(self, position, target, fov: float) -> None:
+        """Move the camera to ``position`` looking at ``target`` [m], horizontal ``fov`` [deg], in place."""
+        from ..production.animation import CameraPose, apply_camera  # noqa: PLC0415
+
+        apply_camera(self.params, CameraPose(np.asarray(position, float), np.asarray(target, float), float(fov)),
+                     sensor="sensor")
+
+    def point_sun(self, elevation: float, azimuth: float) -> None:
+        """Move the sun of the sky and of the ``split`` integrator's in-water sampling [deg], in place.
+
+        Neither reloads the scene nor recompiles: ``sunsky``'s direction is a
+        scene parameter, and the integrator holds its sun as an opaque value.
+        """
+        from ..production.animation import SunAngles, apply_sun  # noqa: PLC0415
+
+        apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
+        integrator = self.scene.integrator()
+        if getattr(integrator, "sun", None) is not None:
+            integrator.set_sun(sun_direction(float(elevation), float(azimuth)))
+
+    def set_in_water_clamp(self, value: float) -> None:
+        """Set the ``split`` integrator's in-water clamp [W m⁻² sr⁻¹ nm⁻¹] when it has one (else nothing)."""
+        integrator = self.scene.integrator()
+        if getattr(integrator, "clamps", False):
+            integrator.set_in_water_clamp(float(value))
+
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
         update_water_parameters(self.params, geometry)
@@ -220,34 +246,55 @@ class WaterRenderer:
         return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))
 
 
-def adapting_white_XYZ(settings: Scene, spp: int | None = None, seed: int = 0) -> np.ndarray:
-    """XYZ [cd m⁻²] of a white Lambertian surface lit by the scene's sun and sky.
+class WhiteMeter:
+    """A white Lambertian plane under the scene's sun and sky, loaded once, to measure the adapting white.
 
     The radiance of a perfectly white Lambertian plane is L = E/π, with E the
-    horizontal spectral irradiance of sun + sky (Lambert's cosine law), so this
-    is the adapting white of the vision model in the same spectra and units
-    as the frames. It is measured with a ``radiancemeter`` looking straight
-    down at a large white ``diffuse`` disk under the same ``sunsky`` emitter,
-    with next-event estimation (``path``, one bounce).
+    horizontal spectral irradiance of sun + sky (Lambert's cosine law), so
+    :meth:`measure` gives the adapting white of the vision model in the same
+    spectra and units as the frames. It is measured with a ``radiancemeter``
+    looking straight down at a large white ``diffuse`` disk under the same
+    ``sunsky`` emitter (key ``"sky"``), with next-event estimation (``path``,
+    one bounce). :meth:`point_sun` moves the sun in place, so a moving sun
+    costs one small render per frame, not a scene load (and its compilation).
     """
-    import mitsuba as mi  # noqa: PLC0415
 
-    scene = mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": 2},
-        "sensor": {
-            "type": "radiancemeter",
-            "origin": [0.0, 0.0, 1.0],
-            "direction": [0.0, 0.0, -1.0],
-            "film": {**xyz_film(1, 1), "rfilter": {"type": "box"}},
-            "sampler": {"type": "independent", "sample_count": int(spp or settings.render.white_spp)},
-        },
-        "sky": sunsky_emitter(settings.sun),
-        "ground": {
-            "type": "disk",
-            "to_world": mi.ScalarTransform4f().scale([1.0e4, 1.0e4, 1.0]),
-            "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}},
-        },
-    })
-    film = np.array(mi.render(scene, seed=int(seed)))
-    return film_to_absolute_XYZ(film).reshape(3)
+    def __init__(self, settings: Scene, spp: int | None = None):
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.scene = mi.load_dict({
+            "type": "scene",
+            "integrator": {"type": "path", "max_depth": 2},
+            "sensor": {
+                "type": "radiancemeter",
+                "origin": [0.0, 0.0, 1.0],
+                "direction": [0.0, 0.0, -1.0],
+                "film": {**xyz_film(1, 1), "rfilter": {"type": "box"}},
+                "sampler": {"type": "independent", "sample_count": int(spp or settings.render.white_spp)},
+            },
+            "sky": sunsky_emitter(settings.sun),
+            "ground": {
+                "type": "disk",
+                "to_world": mi.ScalarTransform4f().scale([1.0e4, 1.0e4, 1.0]),
+                "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}},
+            },
+        })
+        self.params = mi.traverse(self.scene)
+
+    def point_sun(self, elevation: float, azimuth: float) -> None:
+        """Move the sun to ``elevation`` (> 0) and ``azimuth`` clockwise from north [deg], in place."""
+        from ..production.animation import SunAngles, apply_sun  # noqa: PLC0415
+
+        apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
+
+    def measure(self, seed: int = 0) -> np.ndarray:
+        """XYZ [cd m⁻²] of the white plane under the current sun and sky."""
+        import mitsuba as mi  # noqa: PLC0415
+
+        film = np.array(mi.render(self.scene, seed=int(seed)))
+        return film_to_absolute_XYZ(film).reshape(3)
+
+
+def adapting_white_XYZ(settings: Scene, spp: int | None = None, seed: int = 0) -> np.ndarray:
+    """XYZ [cd m⁻²] of a white Lambertian surface lit by the scene's sun and sky (:class:`WhiteMeter`)."""
+    return WhiteMeter(settings, spp).measure(seed)

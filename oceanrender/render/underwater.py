@@ -156,7 +156,8 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
     medium : mitsuba.Medium               The homogeneous water medium (σ in m⁻¹).
     active : mitsuba.Bool                 Lanes to trace.
     is_water_surface : callable           ``BSDFPtr -> Bool``: the BSDF is the air–water surface's.
-    sun : sequence of 3 floats            Unit vector towards the sun (z up).
+    sun : mitsuba.Vector3f or 3 floats    Unit vector towards the sun (z up); pass an opaque
+                                          ``Vector3f`` to change it between renders without recompiling.
     eta : float                           Refractive index of water relative to air [-].
     alpha : float                         Beckmann roughness α_q of the refracted-sun lobe [-].
     max_depth, rr_depth : int             Vertices allowed in the water; Russian roulette after ``rr_depth``.
@@ -171,7 +172,8 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
     import mitsuba as mi  # noqa: PLC0415
 
     sample_lobe, pdf_lobe = sun_lobe_functions()
-    sun_v = mi.Vector3f(*[float(c) for c in sun])
+    # NOTE: Python floats become literals in the traced kernel; an (opaque) Vector3f is used as is.
+    sun_v = sun if isinstance(sun, mi.Vector3f) else mi.Vector3f(*[float(c) for c in sun])
     ctx = mi.BSDFContext()
     phase = medium.phase_function()
     n_channels = dr.size_v(mi.Spectrum)
