@@ -7,10 +7,12 @@ on stderr and exit code 2; no traceback.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import time
 import warnings
 from pathlib import Path
+from typing import Iterator
 
 from . import __version__
 from .config import Scene, SceneError, load_scene, with_overrides
@@ -51,6 +53,11 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--out", type=Path, metavar="DIR", help="output root (default: the scene's, 'outputs')")
     render.add_argument("--variant", metavar="V", help="Mitsuba variant: 'auto' or e.g. llvm_ad_spectral")
     render.add_argument("--denoise", action="store_true", help="denoise each frame (Intel Open Image Denoise)")
+    where = render.add_mutually_exclusive_group()
+    where.add_argument("--workers", type=int, metavar="N",
+                       help="render frames on a local Dask cluster of N worker processes")
+    where.add_argument("--cluster", metavar="tcp://HOST:PORT",
+                       help="render frames on the workers of a running Dask scheduler (see README)")
     render.add_argument("--no-progress", action="store_true", help="no progress bar")
 
     geometry = commands.add_parser(
@@ -185,21 +192,60 @@ def activate(requested: str):
         raise UserError(str(exc)) from None
 
 
+def check_dask_options(args: argparse.Namespace) -> None:
+    """--workers N ≥ 1; --cluster a scheduler address such as tcp://HOST:PORT."""
+    if args.workers is not None and args.workers < 1:
+        raise UserError(f"--workers: expected a number of worker processes ≥ 1, got {args.workers}")
+    if args.cluster is not None and "://" not in args.cluster:
+        raise UserError(f"--cluster: expected a Dask scheduler address like tcp://HOST:8786, got {args.cluster!r}")
+
+
 def cmd_render(args: argparse.Namespace) -> int:
+    check_dask_options(args)
     scene = load_scene(args.scene)
     scene = scene_with_cli_overrides(scene, args)
     check_resources(scene, str(args.scene))
+    with dask_client(args) as client:  # None: this process renders
+        return _render(args, scene, client)
+
+
+@contextlib.contextmanager
+def dask_client(args: argparse.Namespace) -> Iterator[object]:
+    """The Dask client of ``--workers N`` (a LocalCluster it owns) or ``--cluster ADDRESS``; else None.
+
+    Connecting comes before any work, so an unreachable scheduler is a one-line error.
+    """
+    if args.workers is None and args.cluster is None:
+        yield None
+        return
+    from dask.distributed import Client  # noqa: PLC0415
+
+    if args.cluster is not None:
+        try:
+            client = Client(args.cluster, timeout="10s")
+        except (OSError, TimeoutError) as exc:
+            raise UserError(f"--cluster {args.cluster}: no Dask scheduler reachable ({exc})") from None
+        with client:
+            yield client
+        return
+    from .production.distributed import local_cluster  # noqa: PLC0415
+
+    with local_cluster(args.workers) as cluster, Client(cluster) as client:
+        yield client
+
+
+def _render(args: argparse.Namespace, scene: Scene, client) -> int:
     runtime = activate(scene.render.variant)
     out_dir = Path(scene.output.directory) / scene.name
     start, end = scene.output.frames
     width, height = scene.output.resolution
+    where = "" if client is None else (f", {len(client.scheduler_info()['workers'])} Dask worker(s)"
+                                       + (f" at {args.cluster}" if args.cluster else ""))
     print(f"oceanrender {__version__}: {scene.name}, frames {start}:{end}, {width}x{height}, "
           f"{scene.output.spp} spp, variant {runtime.variant}"
-          + (f" (LLVM {runtime.llvm_library})" if runtime.llvm_library else "") + f" -> {out_dir}", flush=True)
+          + (f" (LLVM {runtime.llvm_library})" if runtime.llvm_library else "") + f"{where} -> {out_dir}", flush=True)
 
     from tqdm import tqdm  # noqa: PLC0415
-
-    from .pipeline import render_sequence  # noqa: PLC0415
 
     bar = tqdm(total=end - start, unit="frame", disable=args.no_progress, dynamic_ncols=True)
 
@@ -209,13 +255,26 @@ def cmd_render(args: argparse.Namespace) -> int:
 
     tic = time.perf_counter()
     with bar:
-        report = render_sequence(scene, out_dir, runtime.variant, on_frame=on_frame)
+        if client is None:
+            from .pipeline import render_sequence  # noqa: PLC0415
+
+            report = render_sequence(scene, out_dir, runtime.variant, on_frame=on_frame)
+        else:
+            from .production.distributed import render_distributed, worker_threads  # noqa: PLC0415
+
+            threads = worker_threads(args.workers) if args.workers else None
+            report = render_distributed(scene, out_dir, runtime.variant, client, threads=threads, on_frame=on_frame)
     total = time.perf_counter() - tic
     stages = ", ".join(f"{k} {v:.2f} s" for k, v in report.stage_seconds.items())
     print(f"rendered {len(report.rendered)} frame(s), skipped {len(report.skipped)} already complete, "
           f"in {total:.1f} s (setup {report.setup_seconds:.1f} s; {stages})")
     if report.repaired_pixels:
         print(f"warning: {report.repaired_pixels} non-finite pixel(s) repaired from their neighbours", file=sys.stderr)
+    if report.failed:
+        for failed in report.failed:
+            print(f"error: frame {failed.frame} failed on every worker: {failed.error}", file=sys.stderr)
+        print(f"{len(report.failed)} frame(s) not rendered; run the same command again to retry them", file=sys.stderr)
+        return 1
     return 0
 
 

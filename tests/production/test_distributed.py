@@ -1,0 +1,180 @@
+"""Frames on a real Dask LocalCluster (two worker processes): identical frames, a killed worker, the CLI."""
+
+import os
+import signal
+import threading
+import time
+from pathlib import Path
+
+import imageio.v3 as iio
+import numpy as np
+import pytest
+
+from oceanrender.cli import main
+from oceanrender.config import scene_from_dict
+from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
+from oceanrender.pipeline import frame_paths, render_sequence
+from oceanrender.production.distributed import render_distributed, sequence_key, worker_threads
+
+pytestmark = pytest.mark.render
+
+TINY = {
+    "output": {"resolution": [24, 16], "spp": 4, "frames": [0, 4]},
+    "ocean": {"resolution": 16, "patch_size": 40.0},
+    "render": {"white_spp": 64, "max_depth": 6},
+}
+
+
+def tiny_scene(**output):
+    data = {"name": "tiny", **{k: dict(v) for k, v in TINY.items()}}
+    data["output"].update(output)
+    return scene_from_dict(data)
+
+
+def tiny_toml(tmp_path: Path) -> Path:
+    path = tmp_path / "tiny.toml"
+    path.write_text("[output]\nframes = [0, 4]\nresolution = [24, 16]\nspp = 4\n"
+                    f"directory = '{tmp_path / 'out'}'\n"
+                    "[ocean]\nresolution = 16\npatch_size = 40.0\n[render]\nwhite_spp = 64\nmax_depth = 6\n")
+    return path
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    """A LocalCluster of two worker processes, shared by the tests of this module."""
+    from dask.distributed import Client  # noqa: PLC0415
+
+    from oceanrender.production.distributed import local_cluster  # noqa: PLC0415
+
+    with local_cluster(2) as local, Client(local) as client:
+        yield local, client
+
+
+def test_worker_threads_share_the_cores():
+    assert worker_threads(2, cores=2) == 1
+    assert worker_threads(3, cores=16) == 5
+    assert worker_threads(4, cores=2) == 1
+    with pytest.raises(ValueError, match="at least one worker"):
+        worker_threads(0, cores=2)
+
+
+def test_sequence_key_names_what_the_pixels_depend_on():
+    scene = tiny_scene()
+    key = sequence_key(scene, "llvm_ad_spectral", 4, (24, 16), None)
+    assert key == sequence_key(tiny_scene(), "llvm_ad_spectral", 4, (24, 16), None)
+    assert key != sequence_key(tiny_scene(spp=8), "llvm_ad_spectral", 4, (24, 16), None)
+    assert key != sequence_key(scene, "scalar_spectral", 4, (24, 16), None)
+    assert key != sequence_key(scene, "llvm_ad_spectral", 8, (24, 16), None)
+    assert key != sequence_key(scene, "llvm_ad_spectral", 4, (32, 16), None)
+    assert key != sequence_key(scene, "llvm_ad_spectral", 4, (24, 16), "/data/coastal")
+    # The frame range is not part of it: a worker renders any frame of the sequence.
+    assert key == sequence_key(tiny_scene(frames=[10, 20], directory="elsewhere"), "llvm_ad_spectral", 4, (24, 16),
+                               None)
+
+
+def test_cli_on_a_cluster_writes_the_single_process_frames_bit_for_bit(variant, cluster, tmp_path, capsys):
+    local, client = cluster
+    toml = tiny_toml(tmp_path)
+    single = render_sequence(tiny_scene(), tmp_path / "single", variant)
+    assert single.rendered == [0, 1, 2, 3]
+
+    assert main(["render", str(toml), "--cluster", local.scheduler_address, "--no-progress"]) == 0
+    out = tmp_path / "out" / "tiny"
+    assert "2 Dask worker(s)" in capsys.readouterr().out
+    for frame in range(4):
+        mine, theirs = frame_paths(tmp_path / "single", frame), frame_paths(out, frame)
+        assert frame_is_complete(theirs.exr, theirs.png, (24, 16))
+        a, meta_a = read_exr(mine.exr)
+        b, meta_b = read_exr(theirs.exr)
+        for name in FRAME_CHANNELS:
+            np.testing.assert_array_equal(a[name], b[name], err_msg=f"frame {frame} channel {name}")
+        assert meta_b["frame"] == frame and meta_b["spp"] == 4
+        np.testing.assert_array_equal(iio.imread(mine.png), iio.imread(theirs.png))
+    assert a["Y"].mean() > 0
+    # Both workers took part (four frames, two idle workers: the scheduler spreads them).
+    # A second run finds every frame intact and submits nothing.
+    stamps = [frame_paths(out, f).exr.stat().st_mtime_ns for f in range(4)]
+    assert main(["render", str(toml), "--cluster", local.scheduler_address, "--no-progress"]) == 0
+    assert "rendered 0 frame(s), skipped 4" in capsys.readouterr().out
+    assert stamps == [frame_paths(out, f).exr.stat().st_mtime_ns for f in range(4)]
+
+
+def test_frames_of_a_killed_worker_are_rendered_again_exactly_once(variant, cluster, tmp_path):
+    local, client = cluster
+    # A new size: each worker loads a new scene, so the first tasks run for seconds, not milliseconds.
+    scene = tiny_scene(resolution=[64, 48], spp=16, frames=[0, 6])
+    pids = client.run(os.getpid)
+    killed = {}
+
+    def kill_a_busy_worker():
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:
+            busy = {worker: keys for worker, keys in client.processing().items() if keys}
+            if busy:
+                time.sleep(0.5)  # the task has started its scene load
+                busy = {worker: keys for worker, keys in client.processing().items() if keys}
+                worker, keys = sorted(busy.items())[0]
+                killed.update(pid=pids[worker], keys=list(keys))
+                os.kill(pids[worker], signal.SIGKILL)
+                return
+            time.sleep(0.05)
+
+    results, written = [], []
+    killer = threading.Thread(target=kill_a_busy_worker)
+    killer.start()
+    report = render_distributed(scene, tmp_path, variant, client, on_result=results.append,
+                                on_frame=lambda frame, seconds, skipped: written.append((frame, skipped)))
+    killer.join()
+
+    assert killed, "no worker was busy within 2 minutes"
+    assert report.failed == []
+    assert sorted(report.rendered) == list(range(6)) and len(report.rendered) == 6
+    assert sorted(written) == [(f, False) for f in range(6)]
+    for frame in range(6):
+        paths = frame_paths(tmp_path, frame)
+        assert frame_is_complete(paths.exr, paths.png, (64, 48))
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [f"frame_{f:04d}.{ext}" for f in range(6) for ext in ("exr", "png")])
+    # The frame the dead worker held was computed again, by another process.
+    lost = [int(key.split("-")[2]) for key in killed["keys"]]
+    by_frame = {r.rendered.frame: r.worker_pid for r in results}
+    assert lost and all(by_frame[frame] != killed["pid"] for frame in lost)
+    # The nanny restarted the dead worker: two workers again.
+    deadline = time.monotonic() + 60
+    while len(client.scheduler_info()["workers"]) < 2 and time.monotonic() < deadline:
+        time.sleep(0.2)
+    assert len(client.scheduler_info()["workers"]) == 2
+
+
+def test_cli_refuses_bad_dask_options_before_any_work(tmp_path, capsys):
+    toml = tiny_toml(tmp_path)
+    assert main(["render", str(toml), "--workers", "0"]) == 2
+    assert "--workers: expected a number of worker processes ≥ 1, got 0" in capsys.readouterr().err
+    assert main(["render", str(toml), "--cluster", "localhost:8786"]) == 2
+    assert "--cluster: expected a Dask scheduler address like tcp://HOST:8786" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        main(["render", str(toml), "--workers", "2", "--cluster", "tcp://127.0.0.1:8786"])
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_coastal_scene_simulates_once_on_the_client_and_renders_from_its_fields(variant, cluster, tmp_path):
+    from coastal.test_simulation import TINY_COASTAL  # noqa: PLC0415 (tests/ is on sys.path under pytest)
+
+    local, client = cluster
+    scene = scene_from_dict({"name": "tinycoast", "output": {"frames": [0, 3], "fps": 10.0, "resolution": [24, 16],
+                                                             "spp": 4},
+                             "render": {"white_spp": 64, "max_depth": 6},
+                             "camera": {"position": [0.0, 0.0, 5.0], "target": [0.0, 1.5, 0.0]},
+                             "coastal": TINY_COASTAL})
+    report = render_distributed(scene, tmp_path / "dask", variant, client)
+    assert report.failed == [] and sorted(report.rendered) == [0, 1, 2]
+    assert report.simulation.simulated == [0, 1, 2]  # on the client, before the frames
+    assert (tmp_path / "dask" / "coastal" / "frame_0002.npz").is_file()
+    single = render_sequence(scene, tmp_path / "single", variant)
+    assert single.simulation.simulated == [0, 1, 2]
+    for frame in range(3):
+        a, _ = read_exr(frame_paths(tmp_path / "single", frame).exr)
+        b, _ = read_exr(frame_paths(tmp_path / "dask", frame).exr)
+        for name in FRAME_CHANNELS:
+            np.testing.assert_array_equal(a[name], b[name], err_msg=f"frame {frame} channel {name}")
+    assert not np.array_equal(a["Y"], read_exr(frame_paths(tmp_path / "dask", 0).exr)[0]["Y"])  # the water moves
