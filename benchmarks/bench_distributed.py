@@ -9,11 +9,12 @@ setup), then timed on the same N frames:
 1. ``single``: this process, :func:`oceanrender.pipeline.Sequence` + atomic
    writes, Dr.Jit on all cores (what ``oceanrender render`` does);
 2. ``dask ×1``: a LocalCluster of one worker process with all cores, frames
-   as tasks, the client writing (what ``--workers 1`` does): the per-frame
-   Dask overhead is its wall time per frame minus the single process's,
-   as a share of the single process's frame time; the worker-side frame
-   time is also recorded, so the non-compute time on the client
-   (scheduling, transfer of the frame, writing) is measured directly too;
+   as tasks, the client writing (what ``--workers 1`` does), one frame at a
+   time, alternating with 1. frame by frame: the per-frame Dask overhead is
+   the paired difference of wall times as a share of the single process's
+   frame time; the worker-side task time is also recorded, so the time on
+   the client beyond the task (submission, scheduling, transfer of the
+   frame, writing) is measured directly too;
 3. ``dask ×W``: a LocalCluster of W worker processes (default 2), each
    with cores // W Dr.Jit threads (what ``--workers W`` does).
 
@@ -25,6 +26,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import statistics
 import tempfile
 import time
 import warnings
@@ -62,7 +64,8 @@ def time_cluster(scene, variant, workers: int, threads: int, frames: range, tmp:
         wall = time.perf_counter() - tic
     assert sorted(report.rendered) == list(frames) and not report.failed
     computed = sum(t.task_seconds for t in tasks)
-    return {"wall": wall, "per_frame": wall / len(frames), "cluster_start": start, "setup": setup,
+    stages = {stage: sum(t.rendered.seconds[stage] for t in tasks) / len(frames) for stage in tasks[0].rendered.seconds}
+    return {"stages": stages, "wall": wall, "per_frame": wall / len(frames), "cluster_start": start, "setup": setup,
             "task_per_frame": computed / len(frames), "write_per_frame": report.stage_seconds["write"] / len(frames)}
 
 
@@ -89,21 +92,44 @@ def main() -> None:
           f"load average at start {os.getloadavg()[0]:.2f}")
 
     results = {}
+    pairs = []
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         tic = time.perf_counter()
         sequence = Sequence(scene, variant)
-        seconds = {s: 0.0 for s in STAGES}
-        sequence.render_frame(0, frame_paths(tmp / "single", 0), seconds)
+        sequence.render_frame(0, frame_paths(tmp / "single", 0), {s: 0.0 for s in STAGES})
         setup = time.perf_counter() - tic
-        tic = time.perf_counter()
-        for frame in frames:
-            sequence.render_frame(frame, frame_paths(tmp / "single", frame), seconds)
-        wall = time.perf_counter() - tic
-        results["single"] = {"wall": wall, "per_frame": wall / len(frames), "cluster_start": 0.0, "setup": setup,
-                             "task_per_frame": wall / len(frames), "write_per_frame": float("nan")}
+        seconds = {s: 0.0 for s in STAGES}
+        # Per-frame overhead: single process and a one-worker cluster (both warm, same cores), frame by
+        # frame in alternation, so that the machine's drift over the run falls on both alike.
+        from dask.distributed import Client
+
+        from oceanrender.production.distributed import local_cluster, render_distributed
+
+        size = tuple(scene.output.resolution)
+        with local_cluster(1) as cluster, Client(cluster) as client:
+            dask_setup = warm_workers(client, scene, variant, scene.output.spp, size, cores)
+            tasks = []
+            for frame in frames:
+                tic = time.perf_counter()
+                sequence.render_frame(frame, frame_paths(tmp / "single", frame), seconds)
+                single_s = time.perf_counter() - tic
+                tic = time.perf_counter()
+                render_distributed(scene, tmp / "dask1", variant, client, frames=(frame, frame + 1), threads=cores,
+                                   on_result=tasks.append)
+                pairs.append((single_s, time.perf_counter() - tic, tasks[-1].task_seconds))
         del sequence
-        results["dask ×1"] = time_cluster(scene, variant, 1, cores, frames, tmp / "dask1")
+        single_wall = sum(p[0] for p in pairs)
+        dask_wall = sum(p[1] for p in pairs)
+        results["single"] = {"stages": {k: v / len(frames) for k, v in seconds.items() if k != "write"},
+                             "wall": single_wall, "per_frame": single_wall / len(frames), "cluster_start": 0.0,
+                             "setup": setup, "task_per_frame": single_wall / len(frames),
+                             "write_per_frame": seconds["write"] / len(frames)}
+        results["dask ×1"] = {"stages": {k: sum(t.rendered.seconds[k] for t in tasks) / len(frames)
+                                         for k in tasks[0].rendered.seconds},
+                              "wall": dask_wall, "per_frame": dask_wall / len(frames), "cluster_start": float("nan"),
+                              "setup": dask_setup, "task_per_frame": sum(p[2] for p in pairs) / len(frames),
+                              "write_per_frame": float("nan")}
         results[f"dask ×{args.workers}"] = time_cluster(scene, variant, args.workers,
                                                         worker_threads(args.workers, cores), frames,
                                                         tmp / f"dask{args.workers}")
@@ -116,12 +142,17 @@ def main() -> None:
     for name, r in results.items():
         print(f"| {name} | {r['per_frame']:.2f} | {3600 / r['per_frame']:.0f} | {single / r['per_frame']:.2f}× | "
               f"{r['task_per_frame']:.2f} | {r['write_per_frame']:.3f} | {r['setup']:.1f} | {r['cluster_start']:.1f} |")
-    one = results["dask ×1"]
     print()
-    print(f"Dask overhead per frame (one worker, all cores): wall {one['per_frame']:.3f} s vs single process "
-          f"{single:.3f} s → {100 * (one['per_frame'] - single) / single:+.2f} % of frame time; "
-          f"client-side time beyond the worker's task: {one['per_frame'] - one['task_per_frame']:.3f} s / frame "
-          f"({100 * (one['per_frame'] - one['task_per_frame']) / single:+.2f} %)")
+    print("Per frame on the process that rendered it [s]: " + "; ".join(
+        f"{name}: " + ", ".join(f"{k} {v:.2f}" for k, v in r["stages"].items() if v) for name, r in results.items()))
+    ratios = sorted((d - t) / t for t, d, _ in pairs)
+    beyond = sorted((d - task) for _, d, task in pairs)
+    print()
+    print("Dask overhead per frame, one worker vs this process, frame by frame in alternation "
+          f"({len(pairs)} pairs): (t_dask − t_single) / t_single median {100 * statistics.median(ratios):+.2f} % "
+          f"(range {100 * ratios[0]:+.2f} … {100 * ratios[-1]:+.2f} %); time on the client beyond the worker's "
+          f"task (submit, schedule, transfer, write): median {statistics.median(beyond):.3f} s / frame = "
+          f"{100 * statistics.median(beyond) / results['single']['per_frame']:.2f} % of a frame")
 
 
 if __name__ == "__main__":
