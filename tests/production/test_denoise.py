@@ -43,6 +43,31 @@ def test_colour_matrices_are_inverse_and_white_is_sensible():
     np.testing.assert_allclose(equal_energy_white_rgb(), [1.2049, 0.9483, 0.9091], atol=2e-3)
 
 
+def test_AP0_matrix_is_colour_sciences_and_keeps_the_spectral_locus_non_negative():
+    import colour  # noqa: PLC0415
+
+    from oceanrender.production.denoise import AP0_TO_XYZ, XYZ_TO_AP0  # noqa: PLC0415
+
+    np.testing.assert_allclose(XYZ_TO_AP0, colour.RGB_COLOURSPACES["ACES2065-1"].matrix_XYZ_to_RGB, atol=1e-9)
+    np.testing.assert_allclose(XYZ_TO_AP0 @ AP0_TO_XYZ, np.eye(3), atol=1e-12)
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].values  # every monochromatic colour
+    assert (cmfs @ XYZ_TO_AP0.T).min() > -1e-6
+    assert (cmfs @ XYZ_TO_LINEAR_SRGB.T).min() < -0.1  # whereas Rec. 709 cannot hold them
+
+
+def test_a_violet_firefly_is_denoised_not_left_as_a_dark_dot():
+    # Flat water-like blue with one spectral firefly at 410 nm (x, y ≈ 0.17, 0.005), as the
+    # in-water sun sampling makes them: the denoised frame must have no pixel far below the flat level.
+    import colour  # noqa: PLC0415
+
+    xyz = np.tile(np.array([1200.0, 1400.0, 2600.0]), (48, 64, 1))
+    violet = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"][410]
+    xyz[24, 32] += 2e6 * violet / violet[1]
+    out = denoise_XYZ(xyz)
+    assert out[..., 1].min() > 0.8 * 1400.0
+    assert np.isfinite(out).all()
+
+
 def test_denoise_reduces_the_error_of_a_noisy_synthetic_image(rng):
     # A smooth HDR image plus zero-mean multiplicative noise: the denoiser must get closer to it.
     y, x = np.mgrid[0:64, 0:96] / 64.0
