@@ -43,15 +43,18 @@ def assert_same_frame(mine, theirs, frame: int) -> None:
     """The renderer's XYZ bit for bit; the display RGB to float32 rounding and the PNG to one 8-bit level.
 
     The vision model (colour-science, numpy, OpenBLAS) gives last-bit differences between
-    processes for the same XYZ (seen: 1 frame in 4 runs, ≤ 3e-6 relative; Dask workers run
-    OpenBLAS on one thread, and SIMD paths depend on array alignment).
+    processes for the same XYZ (seen in about 1 run in 5: ≤ 3e-6 relative, up to 5e-5 where
+    a channel nearly cancels, i.e. ≤ 1e-7 of the channel's scale; Dask workers run OpenBLAS
+    on one thread, and SIMD paths depend on array alignment).
     """
     a, _ = read_exr(mine.exr)
     b, _ = read_exr(theirs.exr)
     for name in "XYZ":
         np.testing.assert_array_equal(a[name], b[name], err_msg=f"frame {frame} channel {name}")
     for name in "RGB":
-        np.testing.assert_allclose(a[name], b[name], rtol=1e-5, atol=1e-7, err_msg=f"frame {frame} channel {name}")
+        # Relative to the channel's scale: R = 3.24 X − 1.54 Y − 0.50 Z cancels where R is small.
+        scale = float(np.abs(a[name]).max())
+        np.testing.assert_allclose(a[name], b[name], rtol=1e-5, atol=1e-6 * scale, err_msg=f"frame {frame} channel {name}")
     png_a, png_b = iio.imread(mine.png).astype(int), iio.imread(theirs.png).astype(int)
     assert np.abs(png_a - png_b).max() <= 1 and np.mean(png_a != png_b) < 0.01
 
