@@ -54,6 +54,7 @@ class WaterBody:
         self.sea = SeaSurface(scene.ocean)
         mesh = scene.mesh
         self.camera_path = None
+        self._moved_grid: tuple[float, RadialGrid] | None = None  # (t, grid) of the last grid_at(t)
         if mesh.kind == "radial":
             from ..production.animation import camera_motion  # noqa: PLC0415
 
@@ -94,11 +95,17 @@ class WaterBody:
         return {}
 
     def grid_at(self, t: float) -> RadialGrid | None:
-        """The radial grid of time t [s]: centred under the camera at t (None for the patch mesh)."""
+        """The radial grid of time t [s]: centred under the camera at t (None for the patch mesh).
+
+        The grid of the last t asked for is kept: a frame asks three times
+        (surface, foam, mesh), and each new grid recomputes its points.
+        """
         if self.radial is None or self.camera_path is None:
             return self.radial
-        x, y = self.camera_path.at(t).position[:2]
-        return replace(self.radial, center=(float(x), float(y)))
+        if self._moved_grid is None or self._moved_grid[0] != t:
+            x, y = self.camera_path.at(t).position[:2]
+            self._moved_grid = (t, replace(self.radial, center=(float(x), float(y))))
+        return self._moved_grid[1]
 
     def rest_points(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Rest positions (x, y) of the surface vertices at time t [s] [m]."""
