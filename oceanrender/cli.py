@@ -144,8 +144,13 @@ def build_parser() -> argparse.ArgumentParser:
     movie.add_argument("--crf", type=int, default=18, help="H.264 quality, 0 (lossless) to 51 (default 18)")
     movie.add_argument("--columns", type=int, default=6, help="contact-sheet columns (default 6)")
 
-    commands.add_parser("info", help="versions, usable Mitsuba variants and the LLVM library",
-                        description="Report versions and probe which Mitsuba spectral variants work here.")
+    info = commands.add_parser(
+        "info", help="versions against the lock, usable Mitsuba variants and the LLVM library",
+        description="Report the installed version of every core dependency beside the version "
+                    "requirements.lock pins, and probe which Mitsuba spectral variants work here.")
+    info.add_argument("--all", action="store_true", help="compare every package in the lock, not only the core ones")
+    info.add_argument("--check", action="store_true",
+                      help="exit with status 1 when a compared package differs from the lock")
     return parser
 
 
@@ -278,17 +283,26 @@ def _render(args: argparse.Namespace, scene: Scene, client) -> int:
     return 0
 
 
-def cmd_info(_: argparse.Namespace) -> int:
-    import colour  # noqa: PLC0415
-    import drjit  # noqa: PLC0415
-    import mitsuba as mi  # noqa: PLC0415
-    import numpy  # noqa: PLC0415
-
+def cmd_info(args: argparse.Namespace) -> int:
+    from .runtime.environment import (  # noqa: PLC0415
+        compare_with_lock, core_dependencies, find_lock, installed_version, parse_lock)
     from .runtime.variants import SPECTRAL_VARIANTS, cuda_driver_present, find_llvm_library, probe_variant  # noqa: PLC0415
 
-    print(f"oceanrender {__version__}")
-    print(f"python {sys.version.split()[0]}, numpy {numpy.__version__}, mitsuba {mi.__version__}, "
-          f"drjit {drjit.__version__}, colour-science {colour.__version__}")
+    print(f"oceanrender {__version__}, python {sys.version.split()[0]}")
+    lock_path = find_lock(__file__)
+    locked = parse_lock(lock_path.read_text()) if lock_path else {}
+    names = tuple(sorted(locked)) if args.all and locked else core_dependencies()
+    checks = compare_with_lock(names, locked, {name: installed_version(name) for name in names})
+    print(f"lock: {lock_path}" if lock_path else
+          "lock: none beside the package (not a source checkout): versions shown, not compared")
+    for check in checks:
+        verdict = ("" if not lock_path else "matches the lock" if check.matches else
+                   "not in the lock" if check.locked is None else f"DIFFERS: lock pins {check.locked}")
+        print(f"  {check.name:18s} {check.installed or 'not installed':14s} {verdict}")
+    differ = [check.name for check in checks if lock_path and not check.matches]
+    if lock_path:
+        print(f"{len(checks) - len(differ)} of {len(checks)} {'locked' if args.all else 'core'} packages match the lock"
+              + (f"; rebuild .venv from it: OCEANRENDER_FRESH_VENV=1 make setup" if differ else ""))
     llvm = find_llvm_library()
     print(f"libLLVM for drjit: {llvm or 'none found (apt-get install libllvm19)'}")
     for variant in SPECTRAL_VARIANTS:
@@ -299,7 +313,7 @@ def cmd_info(_: argparse.Namespace) -> int:
         else:
             verdict = probe_variant(variant, llvm)
         print(f"  {variant:18s} {'works' if verdict == 'ok' else 'unusable: ' + verdict}")
-    return 0
+    return 1 if args.check and differ else 0
 
 
 def cmd_geometry(args: argparse.Namespace) -> int:

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Set up (or refresh) everything oceanrender needs on a fresh Debian 12 machine:
 #   1. a libLLVM that drjit 1.5 can drive (Debian's libllvm19; LLVM 14/15 abort it),
-#   2. a virtual environment in .venv with the project and its test tools.
-# Idempotent: a stamp file records the pyproject.toml it was made from.
+#   2. a virtual environment in .venv with exactly the versions in requirements.lock
+#      (hash-checked), then the project itself, editable.
+# Idempotent: a stamp file records the lock and pyproject.toml it was made from;
+# OCEANRENDER_FRESH_VENV=1 rebuilds .venv regardless (CI does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PY=${PYTHON:-python3}
@@ -29,13 +31,21 @@ if ! llvm_ok; then
   llvm_ok || echo "bootstrap: warning: no libLLVM >= 16 found: renders fall back to the slow scalar_spectral variant" >&2
 fi
 
-want="$(sha256sum pyproject.toml | cut -d' ' -f1)"
-if [ -x "$VENV/bin/python" ] && [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$want" ]; then
+# The stamp is the hash of the lock and of pyproject.toml: a changed lock rebuilds .venv.
+want="$(cat requirements.lock pyproject.toml | sha256sum | cut -d' ' -f1)"
+if [ -z "${OCEANRENDER_FRESH_VENV:-}" ] && [ -x "$VENV/bin/python" ] && [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$want" ]; then
   exit 0
 fi
-echo "bootstrap: creating $VENV and installing oceanrender (first run: about a minute)" >&2
+echo "bootstrap: creating $VENV from requirements.lock (first run: one to three minutes)" >&2
+rm -rf "$VENV"
+"$PY" -c 'import sys; sys.exit(sys.version_info[:2] != (3, 11))' \
+  || echo "bootstrap: warning: requirements.lock was made for CPython 3.11; $("$PY" -V) may not find every pinned wheel" >&2
 "$PY" -m venv "$VENV"
-"$VENV/bin/python" -m pip install -q --upgrade pip 2>&1 | grep -v -i "warning" >&2 || true
-"$VENV/bin/python" -m pip install -q -e ".[test]" 2>&1 | grep -v -i -E "warning|location .* is ignored" >&2 || true
+quiet() { grep -v -i -E "warning|location .* is ignored" >&2 || true; }
+# Exactly the locked versions, each checked against its hash; --no-deps: the lock is complete.
+"$VENV/bin/python" -m pip install -q --require-hashes --no-deps -r requirements.lock 2>&1 | quiet
+# The project itself, built with the locked setuptools (no isolated build env that would fetch the newest).
+"$VENV/bin/python" -m pip install -q --no-deps --no-build-isolation -e . 2>&1 | quiet
+"$VENV/bin/python" -m pip check >&2 || { echo "bootstrap: pip check failed: requirements.lock is inconsistent" >&2; exit 1; }
 "$VENV/bin/python" -c "import oceanrender, mitsuba, drjit, colour, OpenEXR" || { echo "bootstrap: install failed" >&2; exit 1; }
 echo "$want" > "$STAMP"
