@@ -5,9 +5,6 @@ import warnings
 import numpy as np
 import pytest
 
-#: Relative tolerance for comparisons with closed forms computed in float64.
-RTOL = 1e-6
-
 
 @pytest.fixture
 def rng():

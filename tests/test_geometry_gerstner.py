@@ -4,6 +4,7 @@ from functools import partial
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF
 
 from oceanrender.geometry.fft_ocean import OceanFields
 from oceanrender.geometry.gerstner import (
@@ -16,9 +17,6 @@ from oceanrender.geometry.gerstner import (
     wave_components_variance,
 )
 from oceanrender.geometry.spectra import GRAVITY, dispersion_relation, spectrum_Phillips2001
-
-#: Absolute tolerance [m or -] of identities that hold up to float64 round-off for O(1) fields.
-EXACT_ATOL = 1e-12
 
 FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "jacobian", "normals")
 
@@ -48,12 +46,14 @@ def test_one_component_is_the_analytic_cosine(rng):
     theta = 0.3 * x - 0.2 * y - omega * t + 1.1
     fields = sum_of_sines_fields([wave], x, y, t, depth)
     assert isinstance(fields, OceanFields)
-    np.testing.assert_allclose(fields.height, 0.7 * np.cos(theta), rtol=0, atol=EXACT_ATOL)
-    np.testing.assert_allclose(fields.slope_x, -0.7 * 0.3 * np.sin(theta), rtol=0, atol=EXACT_ATOL)
-    np.testing.assert_allclose(fields.slope_y, 0.7 * 0.2 * np.sin(theta), rtol=0, atol=EXACT_ATOL)
+    # cosines cross zero: relative to their amplitudes a, a kx, a ky
+    np.testing.assert_allclose(fields.height, 0.7 * np.cos(theta), rtol=0, atol=ROUNDOFF * 0.7)
+    np.testing.assert_allclose(fields.slope_x, -0.7 * 0.3 * np.sin(theta), rtol=0, atol=ROUNDOFF * 0.7 * 0.3)
+    np.testing.assert_allclose(fields.slope_y, 0.7 * 0.2 * np.sin(theta), rtol=0, atol=ROUNDOFF * 0.7 * 0.2)
+    # a sum of sines has no horizontal displacement by construction: exact zeros and J = 1
     assert np.all(fields.displacement_x == 0) and np.all(fields.displacement_y == 0)
     np.testing.assert_array_equal(fields.jacobian, 1.0)
-    assert wave.angular_frequency(depth) == pytest.approx(float(omega), rel=1e-15)
+    assert wave.angular_frequency(depth) == pytest.approx(float(omega), rel=ROUNDOFF)
 
 
 @pytest.mark.parametrize("depth", [np.inf, 3.0])
@@ -64,7 +64,8 @@ def test_one_component_travels_at_the_phase_speed(depth, rng):
     x, y = rng.uniform(-30, 30, (2, 100))
     t = 7.3
     later = sum_of_sines_fields([wave], x + speed * t * np.cos(2.0), y + speed * t * np.sin(2.0), t, depth)
-    np.testing.assert_allclose(later.height, sum_of_sines_fields([wave], x, y, 0.0, depth).height, atol=1e-11)
+    np.testing.assert_allclose(later.height, sum_of_sines_fields([wave], x, y, 0.0, depth).height, rtol=0,
+                               atol=ROUNDOFF * wave.amplitude)  # phases of ~20 rad, scale: the amplitude
     # the deep-water speed would be wrong in 3 m of water: the depth reaches ω
     if np.isfinite(depth):
         deep = sum_of_sines_fields([wave], x + speed * t * np.cos(2.0), y + speed * t * np.sin(2.0), t)
@@ -117,11 +118,12 @@ def test_patch_size_makes_the_sea_tile():
     tiled = wave_components_from_spectrum(spectrum, 64, 4, 2 * np.pi / L, 3.0, patch_size=L)
     assert [c.amplitude for c in tiled] == [c.amplitude for c in free]  # the variance is kept exactly
     lattice = np.array([(c.wavenumber_x, c.wavenumber_y) for c in tiled]) / (2 * np.pi / L)
-    np.testing.assert_allclose(lattice, np.rint(lattice), atol=1e-12)
+    np.testing.assert_allclose(lattice, np.rint(lattice), rtol=0, atol=ROUNDOFF * np.abs(lattice).max())
     x, y = np.meshgrid(np.linspace(-20, 20, 9), np.linspace(-20, 20, 7))
+    amplitudes = sum(c.amplitude for c in tiled)  # the scale of the heights [m]
     for model in (sum_of_sines_fields, partial(gerstner_fields, steepness=0.5)):
         here = model(tiled, x, y, 2.0).height
-        np.testing.assert_allclose(model(tiled, x + L, y - L, 2.0).height, here, atol=1e-10)
+        np.testing.assert_allclose(model(tiled, x + L, y - L, 2.0).height, here, rtol=0, atol=ROUNDOFF * amplitudes)
         assert np.abs(model(free, x + L, y, 2.0).height - model(free, x, y, 2.0).height).max() > 1e-3
     with pytest.raises(ValueError, match="2π/L"):
         wave_components_from_spectrum(spectrum, 64, 4, 0.1, 3.0, patch_size=L)
@@ -133,11 +135,13 @@ def test_gerstner_with_zero_steepness_is_the_sum_of_sines(normalisation, rng):
     x, y = rng.uniform(-40, 40, (2, 500))
     flat = sum_of_sines_fields(components, x, y, 3.3)
     gerstner = gerstner_fields(components, x, y, 3.3, steepness=0.0, normalisation=normalisation)
+    # Q = 0 multiplies the displacement: exact zeros and J = 1
     np.testing.assert_array_equal(gerstner.displacement_x, 0.0)
     np.testing.assert_array_equal(gerstner.displacement_y, 0.0)
     np.testing.assert_array_equal(gerstner.jacobian, 1.0)
-    for name in ("height", "slope_x", "slope_y", "normals"):
-        np.testing.assert_allclose(getattr(gerstner, name), getattr(flat, name), rtol=0, atol=EXACT_ATOL)
+    for name in ("height", "slope_x", "slope_y", "normals"):  # two code paths: relative to each field's scale
+        np.testing.assert_allclose(getattr(gerstner, name), getattr(flat, name), rtol=0,
+                                   atol=ROUNDOFF * np.abs(getattr(flat, name)).max())
 
 
 def test_one_gerstner_wave_is_a_trochoid():
@@ -148,10 +152,12 @@ def test_one_gerstner_wave_is_a_trochoid():
     fields = gerstner_fields([wave], s * np.cos(beta), s * np.sin(beta), t, steepness=q,
                              normalisation="Tessendorf 2001")
     theta = k * s - dispersion_relation(k) * t + phase
-    # exact horizontal displacement −Q a k̂ sin θ, and J = 1 − Q k a cos θ
-    np.testing.assert_allclose(fields.displacement_x, -q * a * np.cos(beta) * np.sin(theta), atol=EXACT_ATOL)
-    np.testing.assert_allclose(fields.displacement_y, -q * a * np.sin(beta) * np.sin(theta), atol=EXACT_ATOL)
-    np.testing.assert_allclose(fields.jacobian, 1 - q * k * a * np.cos(theta), atol=EXACT_ATOL)
+    # exact horizontal displacement −Q a k̂ sin θ (scale Q a), and J = 1 − Q k a cos θ (scale 1)
+    np.testing.assert_allclose(fields.displacement_x, -q * a * np.cos(beta) * np.sin(theta), rtol=0,
+                               atol=ROUNDOFF * q * a)
+    np.testing.assert_allclose(fields.displacement_y, -q * a * np.sin(beta) * np.sin(theta), rtol=0,
+                               atol=ROUNDOFF * q * a)
+    np.testing.assert_allclose(fields.jacobian, 1 - q * k * a * np.cos(theta), rtol=0, atol=ROUNDOFF)
     # the profile (X, Z) along k̂ is a trochoid: rolling radius 1/k, tracing radius Q a; its curvature
     # is a k²/(1 ∓ Q k a)² at crest and trough, sharper crests than the sine's a k²
     X = s + fields.displacement_x * np.cos(beta) + fields.displacement_y * np.sin(beta)
@@ -159,6 +165,7 @@ def test_one_gerstner_wave_is_a_trochoid():
     dX, dZ = np.gradient(X, s), np.gradient(Z, s)
     curvature = (dX * np.gradient(dZ, s) - dZ * np.gradient(dX, s)) / (dX**2 + dZ**2) ** 1.5
     crest, trough = np.argmax(Z), np.argmin(Z)
+    # np.gradient is second order: truncation (k Δs)² ≈ 1e-7 here
     assert -curvature[crest] == pytest.approx(a * k**2 / (1 - q * k * a) ** 2, rel=1e-4)
     assert curvature[trough] == pytest.approx(a * k**2 / (1 + q * k * a) ** 2, rel=1e-4)
     # each particle circles (Q = 1 in Tessendorf's form: a circle of radius a, Gerstner's orbit)
@@ -166,7 +173,7 @@ def test_one_gerstner_wave_is_a_trochoid():
     orbit = [gerstner_fields([wave], 3.0, -1.0, time, steepness=1.0, normalisation="Tessendorf 2001")
              for time in times]
     radius = np.hypot([f.displacement_x for f in orbit], [f.displacement_y for f in orbit])
-    np.testing.assert_allclose(np.hypot(radius, [f.height for f in orbit]), a, rtol=1e-12)
+    np.testing.assert_allclose(np.hypot(radius, [f.height for f in orbit]), a, rtol=ROUNDOFF)
 
 
 def test_finch_normalisation_of_one_wave():
@@ -175,9 +182,10 @@ def test_finch_normalisation_of_one_wave():
     assert steepness_Finch2004([a], [k], q) == pytest.approx([q / (k * a)])
     theta = np.linspace(-np.pi, np.pi, 101)
     fields = gerstner_fields([wave], 0.0, theta / k, 0.0, steepness=q)  # Finch is the default
-    np.testing.assert_allclose(fields.jacobian, 1 - q * np.cos(theta), atol=EXACT_ATOL)  # Q k a = q
-    # zero-amplitude waves neither count in N nor displace
-    assert steepness_Finch2004([a, 0.0], [k, 1.0], q).tolist() == [q / (k * a), 0.0]
+    np.testing.assert_allclose(fields.jacobian, 1 - q * np.cos(theta), rtol=0, atol=ROUNDOFF)  # Q k a = q; scale 1
+    # zero-amplitude waves neither count in N nor displace (their Q is exactly 0)
+    assert steepness_Finch2004([a, 0.0], [k, 1.0], q).tolist() == pytest.approx([q / (k * a), 0.0], rel=ROUNDOFF,
+                                                                                abs=0)
 
 
 @pytest.mark.parametrize("qka", [0.5, 0.975, 1.0, 1.025, 1.5])
@@ -186,7 +194,7 @@ def test_one_wave_loops_only_when_qka_exceeds_one(qka):
     wave = WaveComponent(a, k, 0.0)
     x = np.linspace(-np.pi, np.pi, 2001)  # includes the crest θ = 0
     fields = gerstner_fields([wave], x, 0.0, 0.0, steepness=qka / (k * a), normalisation="Tessendorf 2001")
-    assert fields.jacobian.min() == pytest.approx(1 - qka, abs=1e-12)
+    assert fields.jacobian.min() == pytest.approx(1 - qka, abs=ROUNDOFF)  # J: scale 1
     assert (fields.jacobian.min() < 0) == (qka > 1)
     assert np.all(np.isfinite(fields.normals))  # at the cusp (Q k a = 1) the normal is set to +z
 
@@ -199,8 +207,8 @@ def test_finch_normalisation_never_loops(rng):
              for ki, b, p in zip(k, angles, rng.uniform(0, 2 * np.pi, 12))]
     x, y = rng.uniform(-100, 100, (2, 20000))
     finch = gerstner_fields(waves, x, y, 5.0, steepness=1.0, normalisation="Finch 2004").jacobian
-    assert finch.min() >= -EXACT_ATOL  # J ≥ 1 − q
-    assert finch.max() <= 2 + EXACT_ATOL
+    assert finch.min() >= -ROUNDOFF  # J ≥ 1 − q; J has scale 1
+    assert finch.max() <= 2 + ROUNDOFF
     assert gerstner_fields(waves, x, y, 5.0, steepness=1.0, normalisation="Tessendorf 2001").jacobian.min() < 0
 
 
@@ -224,6 +232,7 @@ def test_analytic_derivatives_match_finite_differences(model, rng):
     # tangents of P = (x + Dx, y + Dy, η) by finite differences: the Jacobian and the normal
     tx = np.stack([1 + d("displacement_x", right, left), d("displacement_y", right, left), fields.slope_x], -1)
     ty = np.stack([d("displacement_x", up, down), 1 + d("displacement_y", up, down), fields.slope_y], -1)
+    # J and the cosines have scale 1; the differences' truncation error is ~1e-9 of it (see d)
     np.testing.assert_allclose(fields.jacobian, tx[:, 0] * ty[:, 1] - tx[:, 1] * ty[:, 0], rtol=0, atol=1e-7)
     for tangent in (tx, ty):
         cosine = np.sum(fields.normals * tangent, axis=-1) / np.linalg.norm(tangent, axis=-1)
@@ -241,7 +250,7 @@ def test_normals_are_unit_and_point_up(rng):
                    gerstner_fields(components, x, y, 1.0, steepness=1.0, normalisation="Finch 2004"),
                    gerstner_fields(components, x, y, 1.0, steepness=1.0, normalisation="Tessendorf 2001")):
         assert fields.normals.shape == (64, 64, 3)
-        np.testing.assert_allclose(np.linalg.norm(fields.normals, axis=-1), 1.0, rtol=1e-14)
+        np.testing.assert_allclose(np.linalg.norm(fields.normals, axis=-1), 1.0, rtol=0, atol=ROUNDOFF)  # scale 1
         assert fields.jacobian.min() > 0  # not folded (this sea is gentle: k a ≪ 1)
         assert np.all(fields.normals[..., 2] > 0)
 
@@ -253,7 +262,7 @@ def test_points_broadcast_and_empty_seas():
         assert getattr(fields, name).shape == ((3, 5, 3) if name == "normals" else (3, 5))
     point = sum_of_sines_fields(components, 1.0, 2.0, 0.0)
     assert point.height.shape == () and point.normals.shape == (3,)
-    calm = gerstner_fields([], np.zeros(4), np.zeros(4), 0.0)
+    calm = gerstner_fields([], np.zeros(4), np.zeros(4), 0.0)  # an empty sum: exactly flat
     np.testing.assert_array_equal(calm.height, 0.0)
     np.testing.assert_array_equal(calm.normals, [[0.0, 0.0, 1.0]] * 4)
 
@@ -283,7 +292,7 @@ def test_jacobian_matrix_entries_when_the_fields_carry_them(rng):
     if getattr(fields, "jacobian_xx", None) is None:
         pytest.skip("this OceanFields has no Jacobian-matrix entries")
     np.testing.assert_allclose(fields.jacobian_xx * fields.jacobian_yy - fields.jacobian_xy**2, fields.jacobian,
-                               rtol=0, atol=EXACT_ATOL)
+                               rtol=0, atol=ROUNDOFF * np.abs(fields.jacobian_xx * fields.jacobian_yy).max())
     flat = sum_of_sines_fields(components, x, y, 1.0)
     np.testing.assert_array_equal(flat.jacobian_xx, 1.0)
     np.testing.assert_array_equal(flat.jacobian_xy, 0.0)

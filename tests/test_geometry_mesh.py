@@ -4,6 +4,7 @@ from collections import Counter
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF32
 
 from oceanrender.geometry.fft_ocean import FFTOcean, OceanFields, OceanGrid
 from oceanrender.geometry.mesh import (
@@ -16,6 +17,10 @@ from oceanrender.geometry.mesh import (
 
 #: Relative tolerance of volumes computed from float32 positions.
 VOLUME_RTOL = 1e-5
+
+#: float32 vertex coordinates, relative to their magnitude (the patch size L): a few ulp of
+#: float32 (eps 1.2e-7). ROUNDOFF32 × L would admit 5 mm seams, near the displacements checked.
+POSITION_RTOL = 8 * float(np.finfo(np.float32).eps)
 
 
 def flat_fields(n):
@@ -59,9 +64,9 @@ def test_flat_sea_volume_and_orientation():
     assert positions.shape == normals.shape == (water_body_vertex_count(n), 3)
     assert signed_volume(positions, faces) == pytest.approx(L * L * depth, rel=VOLUME_RTOL)
     # covers the patch exactly, from −depth to 0
-    np.testing.assert_allclose(positions.min(axis=0), [-L / 2, -L / 2, -depth])
-    np.testing.assert_allclose(positions.max(axis=0), [L / 2, L / 2, 0])
-    np.testing.assert_allclose(positions[-1], [0, 0, -depth], atol=1e-6)  # bottom centre
+    np.testing.assert_allclose(positions.min(axis=0), [-L / 2, -L / 2, -depth], rtol=0, atol=POSITION_RTOL * L)
+    np.testing.assert_allclose(positions.max(axis=0), [L / 2, L / 2, 0], rtol=0, atol=POSITION_RTOL * L)
+    np.testing.assert_allclose(positions[-1], [0, 0, -depth], rtol=0, atol=POSITION_RTOL * L)  # bottom centre
 
 
 def face_normals(positions, faces):
@@ -87,7 +92,7 @@ def test_wavy_sea_volume_and_top_faces_up():
     assert np.all(top[:, 2] > 0)
     bottom = face_normals(positions, faces[-4 * n:])
     assert np.all(bottom[:, 2] < 0)
-    np.testing.assert_allclose(np.linalg.norm(normals, axis=1), 1.0, rtol=1e-6)
+    np.testing.assert_allclose(np.linalg.norm(normals, axis=1), 1.0, rtol=0, atol=ROUNDOFF32)  # float32, scale 1
 
 
 def test_choppy_sea_wraps_periodically_and_stays_closed():
@@ -98,17 +103,20 @@ def test_choppy_sea_wraps_periodically_and_stays_closed():
     positions, normals = water_body_vertices(fields, L, depth)
     top = positions[: (n + 1) ** 2].reshape(n + 1, n + 1, 3)
     # row/column n repeats row/column 0, shifted by L
-    np.testing.assert_allclose(top[:, n] - top[:, 0], np.broadcast_to([L, 0, 0], (n + 1, 3)), atol=1e-5)
-    np.testing.assert_allclose(top[n] - top[0], np.broadcast_to([0, L, 0], (n + 1, 3)), atol=1e-5)
-    np.testing.assert_allclose(normals[: (n + 1) ** 2].reshape(n + 1, n + 1, 3)[:n, :n], fields.normals, rtol=1e-6)
+    np.testing.assert_allclose(top[:, n] - top[:, 0], np.broadcast_to([L, 0, 0], (n + 1, 3)), rtol=0,
+                               atol=POSITION_RTOL * L)
+    np.testing.assert_allclose(top[n] - top[0], np.broadcast_to([0, L, 0], (n + 1, 3)), rtol=0, atol=POSITION_RTOL * L)
+    # float32 unit vectors (scale 1) whose x, y components cross zero
+    np.testing.assert_allclose(normals[: (n + 1) ** 2].reshape(n + 1, n + 1, 3)[:n, :n], fields.normals, rtol=0,
+                               atol=ROUNDOFF32)
     # the displaced top stays oriented up and the body encloses about L² depth
     faces = water_body_faces(n)
     assert np.all(face_normals(positions, faces[: 2 * n * n])[:, 2] > 0)
     assert signed_volume(positions, faces) == pytest.approx(L * L * depth, rel=0.01)
     # the skirt hangs straight below the displaced border, at the bottom
     ring = positions[(n + 1) ** 2: -1]
-    assert np.all(ring[:, 2] == np.float32(-depth))
-    np.testing.assert_array_equal(ring[:n, :2], top[0, :n, :2])  # south edge, west to east
+    assert np.all(ring[:, 2] == np.float32(-depth))  # set, not computed: exact
+    np.testing.assert_array_equal(ring[:n, :2], top[0, :n, :2])  # south edge, west to east (copies: exact)
 
 
 def test_vertices_refuse_a_bottom_above_the_troughs():

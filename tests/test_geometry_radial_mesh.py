@@ -32,10 +32,10 @@ def test_flat_volume_is_the_polygon_prism():
     positions, normals = radial_body_vertices(grid, *flat(grid), depth=20.0)
     faces = radial_body_faces(grid.rings, grid.segments)
     polygon_area = 0.5 * grid.segments * grid.outer_radius**2 * np.sin(2 * np.pi / grid.segments)
-    assert signed_volume(positions, faces) == pytest.approx(polygon_area * 20.0, rel=1e-5)
+    assert signed_volume(positions, faces) == pytest.approx(polygon_area * 20.0, rel=1e-5)  # float32 positions
     p = positions.astype(float)[faces]
     n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    top = np.all(np.abs(p[:, :, 2]) < 1e-9, axis=1)
+    top = np.all(np.abs(p[:, :, 2]) < 1e-9, axis=1)  # z is exactly 0 on the flat top, −20 m below
     assert np.all(n[top, 2] > 0)  # the sea surface faces up
     assert normals.shape == positions.shape
 

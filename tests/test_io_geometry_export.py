@@ -51,6 +51,7 @@ def test_every_map_round_trips_in_blender_layout(tmp_path, sea, fields):
         "normal": "normal_0007.exr",
         "jacobian": "jacobian_0007.exr",
     }
+    # Exact throughout: a float32 EXR round trip of the same arrays, cast to float32 once.
     north_up = lambda a: f32(a)[::-1]  # noqa: E731  (top row = north edge, as Blender bakes)
     height, _ = read_exr(written["height"])
     np.testing.assert_array_equal(height["Y"], north_up(fields.height))
@@ -72,6 +73,7 @@ def test_read_frame_maps_restores_the_fields_layout(tmp_path, sea, fields):
     coverage = np.clip(1 - fields.jacobian, 0, 1)
     export_frame_maps(tmp_path, 0, fields, ocean_metadata(sea, TIME), foam=coverage)
     maps, metadata = read_frame_maps(tmp_path, 0)
+    # Exact: a file round trip of float32 casts of these very arrays.
     np.testing.assert_array_equal(maps["height"], f32(fields.height))
     np.testing.assert_array_equal(
         maps["displacement"], f32(np.stack([fields.displacement_x, fields.displacement_y, fields.height], -1))
@@ -127,7 +129,7 @@ def test_mesh_file(tmp_path, fields):
     path = export_frame_mesh(tmp_path, 3, positions, normals, faces, metadata)
     assert path.name == "mesh_0003.ply"
     mesh = read_ply(path)
-    np.testing.assert_array_equal(mesh.positions, positions)
+    np.testing.assert_array_equal(mesh.positions, positions)  # exact: a file round trip
     np.testing.assert_array_equal(mesh.normals, normals)
     np.testing.assert_array_equal(mesh.faces, faces)
     assert {"frame: 3", "units: m", "time_s: 1.3", "spectrum.name: x", 'note: "\\u03a8 \\u2265 0"'} <= set(mesh.comments)
@@ -205,9 +207,10 @@ def test_sequence_writes_sidecar_maps_and_meshes(tmp_path, sea):
            [("height", "exr"), ("disp", "exr"), ("normal", "exr"), ("jacobian", "exr"), ("mesh", "ply")]]
     )  # fmt: skip
     maps, metadata = read_frame_maps(tmp_path, 4)
+    # Exact: the export evaluates the same ocean.fields(t) with the same inputs in this process.
     np.testing.assert_array_equal(maps["height"], f32(sea.fields(0.2).height))
     assert float(metadata["time_s"]) == 0.2
-    assert read_ply(tmp_path / "mesh_0003.ply").positions.min(axis=0)[2] == -10.0
+    assert read_ply(tmp_path / "mesh_0003.ply").positions.min(axis=0)[2] == -10.0  # exact: the bottom is set to −depth
     document = json.loads((tmp_path / "geometry.json").read_text(encoding="utf-8"))
     assert [entry["frame"] for entry in document["frames"]] == [3, 4] and "mesh" in document["files"]
 

@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF
 
 from oceanrender.optics.mie import (
     JungePSD,
@@ -36,6 +37,8 @@ def test_efficiencies_and_asymmetry_agree_with_miepython():
     m = 1.18 + 0.004j
     ours = sphere_efficiencies(m, x)
     q_ext, q_sca, _, g = miepython.efficiencies_mx(np.full(x.size, m.conjugate()), x)  # miepython: n − ik
+    # Two independent series implementations (different recurrences and term counts):
+    # 1e-9 relative is well above their round-off and far below any physical effect.
     np.testing.assert_allclose(ours.q_ext, q_ext, rtol=1e-9)
     np.testing.assert_allclose(ours.q_sca, q_sca, rtol=1e-9)
     np.testing.assert_allclose(ours.g, g, rtol=1e-9)
@@ -106,13 +109,13 @@ def test_mass_specific_values_scale_with_inverse_density():
     kw = dict(psd=JungePSD(4.0, 0.5e-6, 20e-6), n_diameters=30)
     light = mass_specific_iops([550.0], 1.15 + 0.001j, density_kg_m3=1000.0, **kw)
     heavy = mass_specific_iops([550.0], 1.15 + 0.001j, density_kg_m3=2000.0, **kw)
-    assert light.scattering[0] == pytest.approx(2 * heavy.scattering[0], rel=1e-12)
-    assert light.absorption[0] == pytest.approx(2 * heavy.absorption[0], rel=1e-12)
+    assert light.scattering[0] == pytest.approx(2 * heavy.scattering[0], rel=ROUNDOFF)
+    assert light.absorption[0] == pytest.approx(2 * heavy.absorption[0], rel=ROUNDOFF)
 
 
 def test_non_absorbing_particles_do_not_absorb():
     iops = mass_specific_iops([500.0], 1.2 + 0j, JungePSD(4.0, 0.5e-6, 10e-6), 2650.0, n_diameters=20)
-    assert abs(iops.absorption[0]) < 1e-9 * iops.scattering[0]
+    assert abs(iops.absorption[0]) < 1e-9 * iops.scattering[0]  # Q_ext − Q_sca: cancellation residual
 
 
 def test_callable_index_and_bad_inputs():

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF32
 
 from oceanrender.cli import main
 from oceanrender.config import scene_from_dict
@@ -55,7 +56,9 @@ def test_per_frame_update_renders_like_a_fresh_load(variant):
     fresh = WaterRenderer.build(scene, sequence.iops, sequence.faces, later, roughness=sequence.roughness, spp=4,
                                 sun_lobe_alpha=sequence.sun_lobe_alpha)
     reloaded, _ = fresh.render_xyz(spp=4, seed=11)
-    np.testing.assert_allclose(updated, reloaded, rtol=1e-4, atol=1e-3)
+    # float32 films (pixels ≫ 0): the update rebuilds the acceleration structure in place, the
+    # fresh load builds its own; the same vertices and seed agree to the last bits (observed: exactly).
+    np.testing.assert_allclose(updated, reloaded, rtol=ROUNDOFF32)
     # ...and it is not trivially equal to the frame-0 image.
     sequence.renderer.update_water(first)
     other, _ = sequence.renderer.render_xyz(spp=4, seed=11)

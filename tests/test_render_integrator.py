@@ -14,6 +14,7 @@ compile a new kernel, ~10 s for the split integrator on two CPU cores.
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF32
 
 from oceanrender.render.integrator import SPLIT_INTEGRATOR, register, split_integrator
 from oceanrender.render.scene import look_at_transform, xyz_film
@@ -197,8 +198,9 @@ def test_a_ray_that_misses_the_water_returns_the_sky_radiance(scenes):
         configure(scene, looking_up, SUN, albedo=0.8)
         films[name] = renders(scene, seeds=(5,), spp=4)
     assert films["emitted"].min() > 0
-    np.testing.assert_allclose(films["split"], films["emitted"], rtol=1e-5)
-    np.testing.assert_allclose(films["split"], films["volpath"], rtol=1e-5)
+    # float32 films from differently compiled kernels (FMA contraction may differ): pixels > 0.
+    np.testing.assert_allclose(films["split"], films["emitted"], rtol=ROUNDOFF32)
+    np.testing.assert_allclose(films["split"], films["volpath"], rtol=ROUNDOFF32)
 
 
 def test_split_integrator_entry_and_registration(variant):

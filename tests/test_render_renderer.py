@@ -5,6 +5,7 @@ import math
 import colour
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF
 
 from oceanrender.config import scene_from_dict
 from oceanrender.render.renderer import K_M, adapting_white_XYZ, repair_non_finite
@@ -20,9 +21,10 @@ def cmf_integrals():
 
 
 def test_sun_direction_convention():
-    np.testing.assert_allclose(sun_direction(90, 0), [0, 0, 1], atol=1e-12)
-    np.testing.assert_allclose(sun_direction(0, 0), [0, 1, 0], atol=1e-12)  # north = +y
-    np.testing.assert_allclose(sun_direction(0, 90), [1, 0, 0], atol=1e-12)  # east = +x
+    # Unit vectors (scale 1); cos 90° is 6e-17, not 0.
+    np.testing.assert_allclose(sun_direction(90, 0), [0, 0, 1], atol=ROUNDOFF)
+    np.testing.assert_allclose(sun_direction(0, 0), [0, 1, 0], atol=ROUNDOFF)  # north = +y
+    np.testing.assert_allclose(sun_direction(0, 90), [1, 0, 0], atol=ROUNDOFF)  # east = +x
     assert np.linalg.norm(sun_direction(33, 123)) == pytest.approx(1)
 
 

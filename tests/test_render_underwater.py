@@ -10,6 +10,7 @@ within the sun's 0.5° disc), so the closed form is the reference.
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF32
 
 from oceanrender.optics.fresnel import refracted_cosine, transmittance_Fresnel
 from oceanrender.render.integrator import register, split_integrator
@@ -45,7 +46,10 @@ def test_sun_lobe_density_integrates_to_one_and_matches_its_samples(variant, alp
     assert valid.mean() > 0.97
     # Directions point up, into the surface; the density evaluated at a sample is the sample's.
     assert np.all(d_np[2, valid] > 0)
-    np.testing.assert_allclose(np.array(pdf(d, sun, N_WATER, alpha))[valid], p_np[valid], rtol=2e-3)
+    # Two float32 formulas for one density (the sampler's Jacobian, the direct evaluation):
+    # 2e-3 relative; the far tails (down to 1e-5 of the peak) relative to the peak.
+    np.testing.assert_allclose(np.array(pdf(d, sun, N_WATER, alpha))[valid], p_np[valid], rtol=2e-3,
+                               atol=ROUNDOFF32 * p_np[valid].max())
     # ∫ q dω over the upper hemisphere by uniform-hemisphere Monte Carlo: the mass of
     # the facets that refract the sun (all but the few facing away from it).
     m = 4_000_000
@@ -131,7 +135,8 @@ def test_in_water_clamp_bounds_the_samples_and_is_inert_when_high(variant):
 
     plain, high, low = (pool_scene(3, 16, clamp) for clamp in (0.0, 1e9, 1e-4))
     images = [np.array(mi.render(scene, seed=3))[..., 1] for scene in (plain, high, low)]
-    np.testing.assert_allclose(images[1], images[0], rtol=1e-6)
+    # An inert clamp is still a different float32 kernel: last bits only (pixels > 0).
+    np.testing.assert_allclose(images[1], images[0], rtol=ROUNDOFF32)
     # Clamped to 1e-4 W m⁻² sr⁻¹ nm⁻¹ per sample and wavelength: Y ≤ 1e-4 · ∫ȳ · T(0)/n² < 0.011.
     assert images[2].max() < 1e-4 * 106.857 and images[2].mean() < 0.05 * images[0].mean()
     with pytest.raises(ValueError, match="in_water_clamp"):

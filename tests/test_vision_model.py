@@ -5,6 +5,7 @@ import dataclasses
 import colour
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF32
 
 from oceanrender.vision import (
     BRIGHTNESS_METHODS,
@@ -15,7 +16,7 @@ from oceanrender.vision import (
     brightness_scale_factor,
 )
 
-RTOL = 1e-4  # float32 output
+RTOL = ROUNDOFF32  # float32 output
 
 XYZ_A_5000 = colour.xy_to_XYZ(colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["A"]) * 5000.0
 
@@ -58,19 +59,24 @@ def test_broadcasting_image_and_pixel(rng):
     assert image.shape == (5, 7, 3) and image.dtype == np.float32
     pixel = model.apply(XYZ[3, 4], XYZ_A_5000, 1500.0)
     assert pixel.shape == (3,)
-    np.testing.assert_allclose(image[3, 4], pixel, rtol=1e-6)
-    np.testing.assert_allclose(
+    # One pixel and a whole image may take different matrix kernels (float64 last bits, then
+    # a float32 cast); random XYZ give out-of-gamut channels near 0: relative to the image's scale.
+    scale = np.abs(image).max()
+    np.testing.assert_allclose(image[3, 4], pixel, rtol=0, atol=ROUNDOFF32 * scale)
+    # Exact: the function builds the same VisionModel and calls apply on the same inputs.
+    np.testing.assert_array_equal(
         XYZ_to_display_sRGB_linear(XYZ, XYZ_A_5000, 1500.0, "Ferwerda 1996", "CAT02", 200.0),
         image,
-        rtol=1e-6,
     )
 
 
 def test_linear_in_XYZ(rng):
     model = VisionModel()
     XYZ = rng.uniform(0.0, 4000.0, size=(3, 3))
+    once = 2.0 * model.apply(XYZ, XYZ_A_5000, 900.0)
+    # float32 output; channels of random XYZ can be near 0 after the matrices: relative to the scale.
     np.testing.assert_allclose(
-        model.apply(2.0 * XYZ, XYZ_A_5000, 900.0), 2.0 * model.apply(XYZ, XYZ_A_5000, 900.0), rtol=1e-6
+        model.apply(2.0 * XYZ, XYZ_A_5000, 900.0), once, rtol=0, atol=ROUNDOFF32 * np.abs(once).max()
     )
 
 

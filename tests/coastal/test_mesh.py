@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF, ROUNDOFF32
 
 from oceanrender.coastal.mesh import (
     DRY_DROP,
@@ -13,6 +14,10 @@ from oceanrender.coastal.mesh import (
 from oceanrender.geometry.mesh import heightfield_body_faces, signed_volume, water_body_faces as patch_faces
 
 SPACING, ORIGIN = (0.5, 0.25), (-3.0, 10.0)
+
+#: float32 vertex coordinates, relative to their magnitude: a few ulp of float32 (eps 1.2e-7),
+#: far below the cells (ROUNDOFF32 of 13 m would be a millimetre).
+POSITION_RTOL = 8 * float(np.finfo(np.float32).eps)
 
 
 def beach(ny=12, nx=9):
@@ -38,7 +43,7 @@ def test_water_body_is_closed_and_oriented_outwards():
     assert all((b, a) in directed for a, b in directed)
     # Outward normals ⇒ positive signed volume, equal to the prism volume over the grid's span.
     assert signed_volume(positions, faces) > 0
-    assert np.allclose(np.linalg.norm(normals, axis=1), 1.0, atol=1e-6)
+    np.testing.assert_allclose(np.linalg.norm(normals, axis=1), 1.0, rtol=0, atol=ROUNDOFF32)  # float32, scale 1
 
 
 def test_heightfield_faces_generalise_the_square_patch():
@@ -52,13 +57,15 @@ def test_dry_cells_lie_under_the_terrain_and_wet_cells_at_the_surface():
     z = water_surface_heights(bed, depth, h_min=1e-3)
     wet = depth > 1e-3
     assert wet.any() and (~wet).any()
-    np.testing.assert_allclose(z[wet], (bed + depth)[wet])
-    np.testing.assert_allclose(z[~wet], bed[~wet] - DRY_DROP)
+    scale = np.abs(bed).max()  # elevations cross 0 at the still level: relative to the terrain's relief
+    np.testing.assert_allclose(z[wet], (bed + depth)[wet], rtol=0, atol=ROUNDOFF * scale)
+    np.testing.assert_allclose(z[~wet], bed[~wet] - DRY_DROP, rtol=0, atol=ROUNDOFF * scale)
     positions, _ = water_body_vertices(bed, depth, SPACING, ORIGIN, h_min=1e-3)
     t_positions, t_faces, t_normals = terrain_mesh(bed, SPACING, ORIGIN)
     ny, nx = bed.shape
     # Same vertices in x, y; the terrain is open (no walls) with upward normals.
-    np.testing.assert_allclose(positions[: ny * nx, :2], t_positions[:, :2])
+    np.testing.assert_allclose(positions[: ny * nx, :2], t_positions[:, :2], rtol=0,
+                               atol=POSITION_RTOL * np.abs(t_positions[:, :2]).max())
     assert len(t_faces) == 2 * (ny - 1) * (nx - 1)
     assert np.all(t_normals[:, 2] > 0)
     # Cell centres at origin + (i + ½) Δ.
@@ -74,6 +81,6 @@ def test_shading_normals_follow_water_and_beach_not_the_hidden_drop():
     # Flat still water: vertical normals in the wet interior; the beach tilts towards −y… at most its slope.
     wet = depth > 1e-3
     interior = wet & np.roll(wet, 1, 0) & np.roll(wet, -1, 0)
-    np.testing.assert_allclose(top[interior][:, 2], 1.0, atol=1e-9)
+    np.testing.assert_allclose(top[interior][:, 2], 1.0, rtol=0, atol=ROUNDOFF32)  # float32 unit vectors: scale 1
     slope_cos = 1.0 / np.hypot(1.0, 0.3)
-    assert np.all(top[..., 2] >= slope_cos - 1e-6)
+    assert np.all(top[..., 2] >= slope_cos - ROUNDOFF32)

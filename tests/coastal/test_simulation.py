@@ -30,6 +30,7 @@ def test_fields_are_stored_per_frame_and_a_resumed_run_is_identical(tmp_path):
     assert not np.array_equal(first[0]["h"], first[2]["h"])  # the waves move
     channels, meta = read_exr(tmp_path / "frame_0001.exr")
     assert set(channels) == {"h", "eta", "u", "v", "bed"}
+    # the EXR stores float32: rounding ≤ 6e-8 of each value
     np.testing.assert_allclose(channels["h"], first[1]["h"], rtol=1e-6, atol=1e-7)
     assert meta["frame"] == 1
 
@@ -38,6 +39,7 @@ def test_fields_are_stored_per_frame_and_a_resumed_run_is_identical(tmp_path):
     again = run_simulation(scene, tmp_path)
     assert again.found == [0, 1] and again.simulated == [2]
     assert again.resumed_from is not None
+    # exact: the resumed run repeats the uninterrupted run's steps from its saved state
     np.testing.assert_array_equal(read_frame_fields(tmp_path, 2)["h"], first[2]["h"])
 
 

@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from tolerances import ROUNDOFF
 
 from oceanrender.coastal import swe
 from oceanrender.coastal.analytic import (
@@ -30,7 +31,7 @@ from oceanrender.coastal.swe import (
 )
 
 #: Relative volume change allowed for closed basins (round-off of the update sums).
-MASS_RTOL = 1e-12
+MASS_RTOL = ROUNDOFF
 #: Rows of the narrow grids on which one-dimensional problems run (walls north and south).
 ROWS = 3
 #: Dry threshold of the validation runs [m]: thin enough not to delay Ritter's front.
@@ -64,7 +65,9 @@ def l1_dam_break(order, nx, h_right, length=10.0, x0=5.0, h_left=1.0, t_end=0.6,
     solver, state = channel(np.where(x < x0, h_left, h_right), np.zeros(nx), dx, order, **params)
     solver.advance(state, t_end)
     exact = cell_average(lambda s: dam_break_stoker(s, t_end, h_left, h_right, x0)[0], x, dx)
-    assert np.array_equal(state.h[0], state.h[ROWS - 1])  # the 1-D problem stays 1-D
+    # the 1-D problem stays 1-D: the rows next to the north and south walls see the same arithmetic
+    # on the same numbers, so bit for bit
+    assert np.array_equal(state.h[0], state.h[ROWS - 1])
     return float(np.abs(state.h[1] - exact).sum() * dx)
 
 
@@ -131,7 +134,7 @@ def test_bore_into_still_water_obeys_the_jump_relations(order):
     plateau = int((x0 + 0.5 * jump.speed * t_end) / dx)
     assert h[plateau] == pytest.approx(jump.h_behind, rel=1e-4)
     assert state.hu[1, plateau] / h[plateau] == pytest.approx(jump.u_behind, rel=1e-4)
-    assert h[-5] == pytest.approx(jump.h_ahead, rel=1e-12)
+    assert h[-5] == pytest.approx(jump.h_ahead, rel=ROUNDOFF)  # still water the bore has not reached
 
 
 @pytest.mark.parametrize("order", [1, 2])
@@ -165,8 +168,8 @@ def bumpy_bed(rng, ny=24, nx=32, dx=0.5):
 
 
 @pytest.mark.parametrize("order", [1, 2])
-@pytest.mark.parametrize("h_min, level, tolerance", [(1e-3, 0.0, 0.0), (0.0, 0.0, 0.0), (1e-3, 0.25, 1e-13)])
-def test_lake_at_rest_over_a_bumpy_bed_stays_at_rest(rng, order, h_min, level, tolerance):
+@pytest.mark.parametrize("h_min, level, exact", [(1e-3, 0.0, True), (0.0, 0.0, True), (1e-3, 0.25, False)])
+def test_lake_at_rest_over_a_bumpy_bed_stays_at_rest(rng, order, h_min, level, exact):
     """Well balanced with wet and dry cells and islands: bit for bit at rest when every
     z_b + h rounds to the level, within round-off (~1e-15 m/s) when some cannot."""
     bed, dx = bumpy_bed(rng)
@@ -174,12 +177,15 @@ def test_lake_at_rest_over_a_bumpy_bed_stays_at_rest(rng, order, h_min, level, t
     wet = state.h > max(h_min, swe.H_FLOOR)
     assert 0.2 < wet.mean() < 0.9  # the case has both
     start = state.copy()
+    # exact where bit-identity is the property; else round-off of the depth and of the wave speed √(g h)
+    depth_tolerance = 0.0 if exact else ROUNDOFF * start.h.max()
+    speed_tolerance = 0.0 if exact else ROUNDOFF * math.sqrt(G * start.h.max())
     solver = ShallowWaterSolver(bed, SolverParams(dx=dx, dy=dx, order=order, h_min=h_min))
     solver.advance(state, 10.0)
     assert solver.cell_updates > 300 * bed.size
-    assert np.max(np.abs(state.h - start.h)) <= tolerance
+    assert np.max(np.abs(state.h - start.h)) <= depth_tolerance
     u, v = state.velocities(h_min)
-    assert np.max(np.abs(u)) <= tolerance and np.max(np.abs(v)) <= tolerance
+    assert np.max(np.abs(u)) <= speed_tolerance and np.max(np.abs(v)) <= speed_tolerance
 
 
 def test_lake_at_rest_surface_is_as_exact_as_doubles_allow(rng):
@@ -253,8 +259,9 @@ def test_manning_friction_decelerates_a_uniform_stream():
     solver.advance(state, t_end)
     exact = u0 / (1.0 + G * n_manning**2 * u0 * t_end / h0 ** (4.0 / 3.0))
     u, _ = state.velocities(1e-3)
-    assert np.all(state.h == h0)
-    assert np.allclose(u, exact, rtol=1e-12)
+    assert np.all(state.h == h0)  # fluxes between identical states cancel bit for bit
+    # the exact update accumulates only the round-off of its ~100 steps
+    np.testing.assert_allclose(u, exact, rtol=ROUNDOFF)
 
 
 def test_friction_holds_a_thin_film_on_a_slope():
@@ -288,7 +295,7 @@ def test_parallel_blocks_match_one_thread(monkeypatch):
             state = start.copy()
             ShallowWaterSolver(bed, SolverParams(dx=0.5, dy=0.5, order=order)).advance(state, 1e9, max_steps=6)
             results.append(state)
-        for name in ("h", "hu", "hv"):
+        for name in ("h", "hu", "hv"):  # each row block does the same arithmetic on any thread: exact
             np.testing.assert_array_equal(getattr(results[0], name), getattr(results[1], name))
 
 
@@ -299,7 +306,7 @@ def test_advance_lands_on_t_end_and_counts_updates():
     state.h[:, :25] += 0.5
     h_array = state.h
     assert solver.advance(state, 0.3) is state
-    assert state.t == 0.3
+    assert state.t == 0.3  # the last step sets t = t_end
     assert state.h is h_array  # updated in place
     steps = solver.cell_updates // bed.size
     assert steps > 0 and solver.cell_updates == steps * bed.size
@@ -316,7 +323,7 @@ def test_stable_dt_follows_the_courant_number():
     state.hu[:] = 2.0  # u = 1 m/s
     solver = ShallowWaterSolver(bed, SolverParams(dx=0.5, dy=0.25, cfl=0.4, boundaries=OPEN_ENDS))
     a = math.sqrt(1.5 * G * 2.0)  # kinetic speed of the uniform Maxwellian
-    assert solver.stable_dt(state) == pytest.approx(0.4 / ((1.0 + a) / 0.5 + a / 0.25), rel=1e-12)
+    assert solver.stable_dt(state) == pytest.approx(0.4 / ((1.0 + a) / 0.5 + a / 0.25), rel=ROUNDOFF)
     dry = State(np.zeros_like(bed), np.zeros_like(bed), np.zeros_like(bed))
     assert solver.stable_dt(dry) == math.inf
 
@@ -324,9 +331,11 @@ def test_stable_dt_follows_the_courant_number():
 def test_state_velocities_are_zero_in_dry_cells():
     state = State(np.array([[0.0, 5e-4, 0.5]]), np.array([[0.0, 1e-3, 0.25]]), np.zeros((1, 3)))
     u, v = state.velocities(1e-3)
-    np.testing.assert_array_equal(u, [[0.0, 0.0, 0.5]])
+    np.testing.assert_array_equal(u, [[0.0, 0.0, 0.5]])  # zeros set in dry cells; 0.25/0.5 is exact
     np.testing.assert_array_equal(v, 0.0)
-    np.testing.assert_array_equal(state.surface(np.array([[1.0, 2.0, 3.0]])), [[1.0, 2.0005, 3.5]])
+    # 2 + 5e-4 need not round to the double nearest 2.0005
+    np.testing.assert_allclose(state.surface(np.array([[1.0, 2.0, 3.0]])), [[1.0, 2.0005, 3.5]], rtol=0,
+                               atol=ROUNDOFF * 3.5)
 
 
 @pytest.mark.parametrize(

@@ -37,14 +37,14 @@ def test_every_lut_round_trips_bit_for_bit_with_its_axes(baked, folder):
     assert set(again.luts) == set(LUT_NAMES)
     for name in LUT_NAMES:
         a, b = baked[name], again[name]
-        np.testing.assert_array_equal(a.data, b.data)
+        np.testing.assert_array_equal(a.data, b.data)  # exact: a float32 EXR round trip
         assert a.channels == b.channels and a.columns == b.columns and a.rows == b.rows
         assert a.quantity == b.quantity and a.preview == b.preview
         assert (a.preview_offset, a.preview_scale) == (b.preview_offset, b.preview_scale)
         assert json.loads(json.dumps(jsonable(a.parameters))) == b.parameters
     assert again.n_water == baked.n_water and again.gamma == baked.gamma
     np.testing.assert_allclose(again.rgb("sun_irradiance_rgb"), baked.rgb("sun_irradiance_rgb"))
-    # A texture read back samples like the baked one, from its own axes.
+    # A texture read back samples like the baked one, from its own axes (exact: same data, axes, code).
     h = np.array([0.0, 0.3, 2.0, 17.0, np.inf])
     np.testing.assert_array_equal(sample_lut_1d(again["T0"], h), sample_lut_1d(baked["T0"], h))
     np.testing.assert_array_equal(sample_lut_2d(again["T1"], h[::-1], h), sample_lut_2d(baked["T1"], h[::-1], h))
@@ -76,6 +76,7 @@ def test_png_previews_have_the_documented_encoding(baked, folder):
     assert t0.shape == (PREVIEW_ROWS, SMALL.depth_texels, 3) and t0.dtype == np.uint8
     fresnel = iio.imread(folder / "fresnel.png")
     F = baked["fresnel"].data[0, :, 0]
+    # Exact: integer codes from the documented encoding, written with this same arithmetic.
     np.testing.assert_array_equal(fresnel[0, :, 0], np.rint(np.clip(F, 0, 1) * 255))  # linear, not sRGB
     normals = iio.imread(folder / "ripple_normals.png")
     n = baked["ripple_normals"].data
