@@ -101,9 +101,9 @@ def main() -> None:
     args = parser.parse_args()
     warnings.filterwarnings("ignore", message=".*Matplotlib.*")
 
-    from oceanrender.config import load_scene, with_overrides
+    from oceanrender.scene import load_scene, with_overrides
     from oceanrender.pipeline import Sequence, adaptation_luminance
-    from oceanrender.production.denoise import FeatureRenderer, denoise_XYZ
+    from oceanrender.render.denoise import FeatureRenderer, denoise_XYZ
     from oceanrender.runtime.variants import activate_variant
     from oceanrender.vision.display import encode_sRGB_8bit
 

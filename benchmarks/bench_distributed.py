@@ -77,7 +77,7 @@ def main() -> None:
     args = parser.parse_args()
     warnings.filterwarnings("ignore", message=".*Matplotlib.*")
 
-    from oceanrender.config import load_scene
+    from oceanrender.scene import load_scene
     from oceanrender.pipeline import STAGES, Sequence, frame_paths
     from oceanrender.production.distributed import worker_threads
     from oceanrender.runtime.variants import activate_variant

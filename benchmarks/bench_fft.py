@@ -31,7 +31,7 @@ import tracemalloc
 import numpy as np
 import scipy.fft
 
-from oceanrender.geometry.fft_ocean import ENGINES, FFT_BACKENDS, FFTOcean, OceanGrid
+from oceanrender.waves.fft_ocean import ENGINES, FFT_BACKENDS, FFTOcean, OceanGrid
 
 
 def _forward_ducc0(spectra, workers):

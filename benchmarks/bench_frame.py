@@ -27,7 +27,7 @@ def main() -> None:
     args = parser.parse_args()
     warnings.filterwarnings("ignore", message=".*Matplotlib.*")
 
-    from oceanrender.config import load_scene, with_overrides
+    from oceanrender.scene import load_scene, with_overrides
     from oceanrender.pipeline import STAGES, Sequence, frame_paths
     from oceanrender.runtime.variants import activate_variant
 

@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def main() -> None:
-    from oceanrender.config import load_scene, with_overrides
+    from oceanrender.scene import load_scene, with_overrides
     from oceanrender.pipeline import vision_for_scene
     from oceanrender.realtime.bake import BakeSettings, bake_lut_set, measure_scene_light, water_column, lut_axes
     from oceanrender.realtime.luts import VisionState, bake_T0, bake_T1

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Iterator
 
 from . import __version__
-from .config import Scene, SceneError, load_scene, with_overrides
+from .scene import Scene, SceneError, load_scene, with_overrides
 
 
 class UserError(Exception):
@@ -180,7 +180,7 @@ def check_resources(scene: Scene, source: str) -> None:
         pure_seawater_iops(scene.water.iop_table)
     except SpectralDataError as exc:
         raise UserError(f"{source}: [water] iop_table: {exc}") from None
-    from .pipeline import water_composition  # noqa: PLC0415
+    from .optics.scene_water import water_composition  # noqa: PLC0415
 
     try:
         water_composition(scene)
@@ -322,8 +322,8 @@ def cmd_geometry(args: argparse.Namespace) -> int:
         scene = with_overrides(scene, "command line", output={"frames": args.frames})
     if scene.ocean.model != "FFT":
         raise UserError(f"{args.scene}: [ocean] model: geometry export needs 'FFT', got {scene.ocean.model!r}")
-    from .geometry.sea import SeaSurface  # noqa: PLC0415
-    from .io.geometry_export import export_geometry_sequence  # noqa: PLC0415
+    from .waves.sea import SeaSurface  # noqa: PLC0415
+    from .export.wave_maps import export_geometry_sequence  # noqa: PLC0415
 
     sea = SeaSurface(scene.ocean)
     start, end = scene.output.frames
@@ -335,7 +335,7 @@ def cmd_geometry(args: argparse.Namespace) -> int:
                                                 mesh_depth=scene.water.depth if args.ply else None))
         print(f"cascade {index}: patch {patch.grid.patch_size:g} m, {patch.grid.resolution}² -> {folder}")
     if args.camera_mesh:
-        from .io.camera_mesh import export_camera_mesh  # noqa: PLC0415
+        from .export.camera_mesh import export_camera_mesh  # noqa: PLC0415
 
         ply, table = export_camera_mesh(scene, args.out)
         written += 2
@@ -416,10 +416,11 @@ def cmd_optics(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     check_resources(scene, str(args.scene))
     runtime = activate(args.variant or scene.render.variant)
-    from .io.optics_report import write_optics_report  # noqa: PLC0415
-    from .optics.report import REPORT_WAVELENGTHS, scene_optics, sky_irradiance_spectra  # noqa: PLC0415
+    from .export.optics_report import write_optics_report  # noqa: PLC0415
+    from .optics.report import REPORT_WAVELENGTHS, scene_optics  # noqa: PLC0415
+    from .render.irradiance import sky_irradiance_spectra  # noqa: PLC0415
     from .optics.water import pure_seawater_iops  # noqa: PLC0415
-    from .pipeline import water_composition  # noqa: PLC0415
+    from .optics.scene_water import water_composition  # noqa: PLC0415
 
     wavelengths = REPORT_WAVELENGTHS
     composition = water_composition(scene)

@@ -15,11 +15,11 @@ from typing import Callable
 import numpy as np
 
 from . import __version__
-from .config import Scene
-from .geometry.body import FrameGeometry, WaterBody
-from .geometry.roughness import beckmann_alpha, unresolved_slope_variance
+from .scene import Scene
+from .surface.bodies import scene_water_body, sun_lobe_alpha, surface_roughness
+from .surface.frame import FrameGeometry
 from .io.frames import frame_is_complete, write_exr, write_png
-from .optics.water import MediumOptics, WaterIOPs, composition_optics, pure_seawater_iops
+from .optics.scene_water import water_optics
 from .render.renderer import WaterRenderer, adapting_white_XYZ
 from .vision.brightness import adaptation_luminance_log_average
 from .vision.display import encode_sRGB_8bit
@@ -41,47 +41,6 @@ def frame_paths(out_dir: str | Path, frame: int) -> FramePaths:
     """``<out_dir>/frame_NNNN.exr`` and ``.png``."""
     out_dir = Path(out_dir)
     return FramePaths(exr=out_dir / f"frame_{frame:04d}.exr", png=out_dir / f"frame_{frame:04d}.png")
-
-
-def water_composition(scene: Scene):
-    """The scene's :class:`~oceanrender.optics.components.WaterComposition`, or None for pure sea water."""
-    if scene.composition is None:
-        return None
-    from .optics.components import WaterComposition, preset  # noqa: PLC0415
-
-    settings = scene.composition.model_dump()
-    base = preset(settings.pop("preset")) if scene.composition.preset else WaterComposition()
-    explicit = {key: value for key, value in settings.items() if value is not None}
-    return WaterComposition(**{**base.__dict__, **explicit})
-
-
-def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
-    """What the medium is made of: pure sea water from its table, a Jerlov type, or the ``[composition]``."""
-    if scene.water.jerlov_type is not None:
-        from .optics.jerlov_types import jerlov_type_optics  # noqa: PLC0415
-
-        return jerlov_type_optics(scene.water.jerlov_type)
-    composition = water_composition(scene)
-    if composition is None:
-        return pure_seawater_iops(scene.water.iop_table)
-    return composition_optics(composition)
-
-
-def surface_roughness(scene: Scene, body: WaterBody) -> float:
-    """Beckmann α of the water surface [-]: the scene's, or the slopes of the waves finer than the geometry."""
-    if scene.water.surface_roughness != "auto":
-        return float(scene.water.surface_roughness)
-    cutoff = np.pi / body.finest_cell
-    return beckmann_alpha(unresolved_slope_variance(body.spectrum, cutoff))
-
-
-def sun_lobe_alpha(scene: Scene, body, roughness: float) -> float:
-    """Beckmann roughness of the refracted-sun lobe [-]: the total rms slope of the water surface.
-
-    ``body.total_slope_variance(roughness)`` (resolved waves plus the
-    unresolved ones of Beckmann α ``roughness``), never below ``roughness``.
-    """
-    return float(max(beckmann_alpha(body.total_slope_variance(roughness)), roughness, 1e-3))
 
 
 #: ∫ȳ(λ) dλ of the CIE 1931 2° observer over 360–830 nm [nm].
@@ -160,14 +119,7 @@ class Sequence:
         self.variant = variant
         self.spp = int(spp or scene.output.spp)
         self.resolution = tuple(resolution or scene.output.resolution)
-        if scene.coastal is not None:
-            if coastal_store is None:
-                raise ValueError("a coastal scene renders from its simulation's stored fields: give coastal_store")
-            from .coastal.body import CoastalBody  # noqa: PLC0415
-
-            self.body = CoastalBody(scene, coastal_store)
-        else:
-            self.body = WaterBody(scene)
+        self.body = scene_water_body(scene, coastal_store)
         self.faces = self.body.faces
         self.iops = water_optics(scene)
         first_frame = scene.output.frames[0] if first_frame is None else first_frame
@@ -176,7 +128,7 @@ class Sequence:
         self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self.roughness = surface_roughness(scene, self.body)
         self.sun_lobe_alpha = sun_lobe_alpha(scene, self.body, self.roughness)
-        from .production.animation import SunAngles, camera_motion, static_camera_pose, sun_motion  # noqa: PLC0415
+        from .scene.motion import SunAngles, camera_motion, static_camera_pose, sun_motion  # noqa: PLC0415
 
         self.camera_path = camera_motion(scene)
         self.sun_path = sun_motion(scene)
@@ -196,7 +148,7 @@ class Sequence:
         self.in_water_clamp = scene.render.in_water_clamp * white_mean_radiance(self.white_xyz)
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
                                             in_water_clamp=self.in_water_clamp,
-                                            sun_lobe_alpha=self.sun_lobe_alpha, extra_shapes=self.body.extra_shapes(),
+                                            sun_lobe_alpha=self.sun_lobe_alpha, terrain=self.body.terrain(),
                                             spp=self.spp, resolution=self.resolution)
         self.vision = vision_for_scene(scene)
 
@@ -299,7 +251,7 @@ class Sequence:
         tac = time.perf_counter()
         own["render"] += tac - tic
         if self.scene.render.denoise:
-            from .production.denoise import denoise_XYZ  # noqa: PLC0415
+            from .render.denoise import denoise_XYZ  # noqa: PLC0415
 
             xyz = denoise_XYZ(xyz)
             tic, tac = tac, time.perf_counter()

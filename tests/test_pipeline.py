@@ -9,10 +9,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF32
+from tests.tolerances import ROUNDOFF32
 
 from oceanrender.cli import main
-from oceanrender.config import scene_from_dict
+from oceanrender.scene import scene_from_dict
 from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import Sequence, frame_paths, render_sequence
 from oceanrender.render.renderer import WaterRenderer
@@ -157,7 +157,7 @@ def test_killed_run_resumes_without_losing_frames(tmp_path):
 
 
 def test_cli_geometry_export(tmp_path, capsys):
-    from oceanrender.io.geometry_export import read_frame_maps
+    from oceanrender.export.wave_maps import read_frame_maps
 
     scene = tmp_path / "geo.toml"
     scene.write_text("[ocean]\nresolution = 16\npatch_size = 40.0\ncascades = 2\n")
@@ -172,7 +172,7 @@ def test_cli_geometry_export(tmp_path, capsys):
 
 def test_composition_builds_the_medium():
     from oceanrender.optics.water import MediumOptics
-    from oceanrender.pipeline import water_composition, water_optics
+    from oceanrender.optics.scene_water import water_composition, water_optics
     from oceanrender.render.scene import water_medium
 
     pure = tiny_scene()

@@ -23,7 +23,7 @@ A side is one of three frozen dataclasses, chosen per side in :class:`Boundaries
 Geometry: cell (j, i) has its centre at x = (i + ½) dx, y = (j + ½) dy; the west
 side is the line x = 0, east x = nx dx, south y = 0, north y = ny dy. Directions are
 the directions the waves travel *toward*, counter-clockwise from +x (east), as for
-the wind in :mod:`oceanrender.geometry.spectra`; a wave train travelling east
+the wind in :mod:`oceanrender.waves.wave_spectra`; a wave train travelling east
 (direction 0) enters through the west side. The phase convention is that of the
 open-sea modules, η = Σ a cos(k·x − ω t + φ).
 

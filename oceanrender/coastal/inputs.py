@@ -1,9 +1,9 @@
-"""Inputs of a coastal simulation from the scene: bathymetry, initial surface, waves, seafloor.
+"""Boundary inputs of a coastal simulation from the scene: incident waves and side conditions.
 
-Pure functions of :class:`~oceanrender.config.scene.CoastalSettings` (and the
-[ocean] spectrum for spectral waves); file arrays are read by
-:func:`read_array` and checked by :func:`check_coastal_inputs` when the scene
-is loaded, before any work starts.
+Pure functions of :class:`~oceanrender.scene.settings.CoastalSettings` (and the
+[ocean] spectrum for spectral waves). The arrays a coastal scene names or
+defines — bathymetry, initial surface, rock cover — are read, built and checked
+in :mod:`oceanrender.scene.arrays` when the scene is loaded, before any work.
 
 Conventions: arrays (ny, nx), rows south → north, columns west → east; cell
 (j, i) centred at origin + ((i + ½) dx, (j + ½) dy); lengths in m.
@@ -11,102 +11,11 @@ Conventions: arrays (ny, nx), rows south → north, columns west → east; cell
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 from numpy.typing import NDArray
 
 from .boundaries import Boundaries, IncidentWave, Transmissive, Wall
-from .mesh import cell_centres as grid_cell_centres
-
-#: EXR channels tried, in order, for a single-valued array.
-EXR_CHANNELS = ("Z", "Y", "R", "V")
-
-
-def read_array(path: str | Path) -> NDArray[np.float64]:
-    """A 2-D float array from a ``.npy`` file or the first of Z/Y/R/V in an EXR [file units: m]."""
-    path = Path(path)
-    if path.suffix.lower() == ".npy":
-        array = np.load(path, allow_pickle=False)
-    else:
-        from ..io.frames import read_exr  # noqa: PLC0415
-
-        channels, _ = read_exr(path)
-        name = next((c for c in EXR_CHANNELS if c in channels), None)
-        if name is None:
-            raise ValueError(f"no channel among {', '.join(EXR_CHANNELS)} (has {', '.join(sorted(channels))})")
-        array = channels[name]
-    array = np.asarray(array, dtype=np.float64)
-    if array.ndim != 2:
-        raise ValueError(f"expected a 2-D array, got shape {array.shape}")
-    return array
-
-
-def check_array(array: NDArray, shape: tuple[int, int]) -> NDArray[np.float64]:
-    """``array`` if it has ``shape`` (ny, nx) and only finite values; else ValueError."""
-    if array.shape != tuple(shape):
-        raise ValueError(f"expected shape (ny, nx) = {tuple(shape)} to match [coastal] cells, got {array.shape}")
-    bad = int(np.count_nonzero(~np.isfinite(array)))
-    if bad:
-        raise ValueError(f"{bad} NaN or infinite values")
-    return array
-
-
-def cell_centres(coastal) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """World x [m] of the columns and y [m] of the rows (:func:`oceanrender.coastal.mesh.cell_centres`)."""
-    return grid_cell_centres(coastal.shape, coastal.spacing, coastal.origin)
-
-
-def plane_beach(y: NDArray, x: NDArray, still_level: float, shoreline_y: float, slope: float,
-                offshore_depth: float) -> NDArray[np.float64]:
-    """Bed elevation z_b(y, x) [m] of a plane beach rising towards −y, floored at ``offshore_depth``.
-
-    z_b = max(still_level − slope (y − shoreline_y), still_level − offshore_depth).
-    """
-    z = still_level - slope * (np.asarray(y, float)[:, None] - shoreline_y)
-    z = np.maximum(z, still_level - offshore_depth)
-    return np.broadcast_to(z, (len(y), len(x))).copy()
-
-
-def bathymetry(coastal) -> NDArray[np.float64]:
-    """Bed elevation z_b (ny, nx) [m] from the settings (analytic or file)."""
-    if coastal.bathymetry == "plane beach":
-        x, y = cell_centres(coastal)
-        return plane_beach(y, x, coastal.still_level, coastal.shoreline_y, coastal.slope, coastal.offshore_depth)
-    return check_array(read_array(coastal.bathymetry), coastal.shape)
-
-
-def initial_depth(coastal, bed: NDArray) -> NDArray[np.float64]:
-    """Initial water depth h = max(η₀ − z_b, 0) [m]; η₀ the still level or the file's surface."""
-    if coastal.initial_surface == "still":
-        eta = np.full(bed.shape, coastal.still_level)
-    else:
-        eta = check_array(read_array(coastal.initial_surface), coastal.shape)
-    return np.maximum(eta - bed, 0.0)
-
-
-def check_coastal_inputs(coastal) -> None:
-    """Read and check every array input (shape, finiteness); ValueError naming the key.
-
-    Raises
-    ------
-    ValueError
-        ``"<key>: <problem>"`` for the first bad input.
-    """
-    for key in ("bathymetry", "initial_surface"):
-        value = getattr(coastal, key)
-        if value in ("plane beach", "still"):
-            continue
-        if not Path(value).is_file():
-            raise ValueError(f"{key}: file not found: {value}")
-        try:
-            check_array(read_array(value), coastal.shape)
-        except (OSError, ValueError, RuntimeError) as exc:
-            raise ValueError(f"{key}: {value}: {exc}") from None
-    bed = bathymetry(coastal)
-    if not np.any(initial_depth(coastal, bed) > coastal.h_min):
-        raise ValueError("bathymetry: no cell is below the still level: there is no water")
-
+from ..scene.arrays import coastal_cell_centres
 
 _SIDE_NORMAL_IN = {"north": -np.pi / 2, "south": np.pi / 2, "east": np.pi, "west": 0.0}
 
@@ -128,7 +37,7 @@ def incident_waves(coastal, ocean_spectrum=None, g: float = 9.81) -> IncidentWav
         return IncidentWave.wave_train(coastal.wave_height / 2.0, coastal.wave_period,
                                        direction_deg=coastal.wave_direction, still_level=coastal.still_level,
                                        ramp_time=2.0 * coastal.wave_period)
-    from ..geometry.gerstner import wave_components_from_spectrum  # noqa: PLC0415
+    from ..waves.gerstner import wave_components_from_spectrum  # noqa: PLC0415
 
     if ocean_spectrum is None:
         raise ValueError("waves = 'spectrum' needs the [ocean] spectrum")
@@ -165,26 +74,3 @@ def boundaries(coastal, ocean_spectrum=None) -> Boundaries:
         else:
             sides[side] = Wall() if coastal.lateral == "wall" else Transmissive()
     return Boundaries(**sides)
-
-
-def rock_mask(coastal) -> NDArray[np.float64]:
-    """Rock coverage (ny, nx) in [0, 1] [-]: a smooth random pattern covering ``rock_cover`` of the floor.
-
-    A sum of 48 random plane waves of wavelengths 0.6–6 m (a Gaussian random
-    field), thresholded at the quantile that leaves ``rock_cover`` of the cells
-    as rock, with a soft edge over 0.1 standard deviations.
-    """
-    rng = np.random.default_rng(coastal.seed)
-    x, y = cell_centres(coastal)
-    field = np.zeros((len(y), len(x)))
-    for _ in range(48):
-        k = 2.0 * np.pi / rng.uniform(0.6, 6.0)
-        theta, phase = rng.uniform(0, 2 * np.pi, 2)
-        field += np.cos(k * (np.cos(theta) * x[None, :] + np.sin(theta) * y[:, None]) + phase)
-    field /= field.std()
-    if coastal.rock_cover <= 0:
-        return np.zeros_like(field)
-    if coastal.rock_cover >= 1:
-        return np.ones_like(field)
-    threshold = np.quantile(field, 1.0 - coastal.rock_cover)
-    return np.clip((field - threshold) / 0.1 + 0.5, 0.0, 1.0)

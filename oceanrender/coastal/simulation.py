@@ -35,6 +35,7 @@ from typing import Callable
 import numpy as np
 
 from ..io.frames import atomic_path
+from ..scene import arrays
 from . import inputs
 from .swe import ShallowWaterSolver, SolverParams, State
 
@@ -47,15 +48,15 @@ def solver_for_scene(scene) -> tuple[ShallowWaterSolver, np.ndarray, State]:
     coastal = scene.coastal
     spectrum = None
     if coastal.waves == "spectrum":
-        from ..geometry.sea import directional_spectrum  # noqa: PLC0415
+        from ..waves.sea import directional_spectrum  # noqa: PLC0415
 
         spectrum = directional_spectrum(scene.ocean)
     dx, dy = coastal.spacing
     params = SolverParams(dx=dx, dy=dy, order=coastal.order, cfl=coastal.cfl, h_min=coastal.h_min,
                           limiter=coastal.limiter,
                           manning=coastal.manning, boundaries=inputs.boundaries(coastal, spectrum))
-    bed = inputs.bathymetry(coastal)
-    h = inputs.initial_depth(coastal, bed)
+    bed = arrays.bathymetry(coastal)
+    h = arrays.initial_depth(coastal, bed)
     state = State(h=h, hu=np.zeros_like(h), hv=np.zeros_like(h), t=0.0)
     return ShallowWaterSolver(bed, params), bed, state
 

@@ -1,7 +1,9 @@
 """The water's optics for a scene: IOPs, surface irradiance and the four-flux light field.
 
-Pure computation (no files): :func:`scene_optics` returns arrays that the
-``oceanrender optics`` command writes as CSV/JSON and plots.
+Pure computation (no files, no Mitsuba): :func:`scene_optics` returns arrays that the
+``oceanrender optics`` command writes as CSV/JSON and plots; the sun and sky
+irradiance it takes comes from the renderer's sky
+(:func:`oceanrender.render.irradiance.sky_irradiance_spectra`).
 """
 
 from __future__ import annotations
@@ -34,41 +36,6 @@ class SceneOptics:
     def attenuation(self) -> np.ndarray:
         """c = a + b [m⁻¹]."""
         return self.absorption + self.scattering
-
-
-def sky_irradiance_spectra(sun, wavelengths: np.ndarray, spp: int = 4096, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
-    """Direct-normal and diffuse horizontal irradiance of Mitsuba's ``sunsky`` [W m⁻² nm⁻¹].
-
-    Measured as π × the radiance of a white Lambertian plane (Lambert's law)
-    through a ``specfilm`` with one 5-nm box band per wavelength, once with the
-    sky alone and once with the sun alone (its horizontal irradiance divided
-    by cos θ_s gives the direct-normal value). Needs an active Mitsuba variant.
-    """
-    import mitsuba as mi  # noqa: PLC0415
-
-    from ..render.scene import sun_direction, sunsky_emitter  # noqa: PLC0415
-
-    half = 0.5 * float(np.median(np.diff(wavelengths)))
-    film = {"type": "specfilm", "width": 1, "height": 1, "component_format": "float32", "rfilter": {"type": "box"}}
-    for i, w in enumerate(wavelengths):
-        film[f"band_{i:03d}"] = {"type": "spectrum", "value": [(w - half, 1.0), (w + half - 1e-3, 1.0)]}
-
-    def horizontal(sky_scale: float, sun_scale: float) -> np.ndarray:
-        emitter = {**sunsky_emitter(sun), "sky_scale": sky_scale * sun.sky_scale, "sun_scale": sun_scale * sun.sun_scale}
-        scene = mi.load_dict({
-            "type": "scene",
-            "integrator": {"type": "path", "max_depth": 2},
-            "sensor": {"type": "radiancemeter", "origin": [0, 0, 1], "direction": [0, 0, -1], "film": film,
-                       "sampler": {"type": "independent", "sample_count": int(spp)}},
-            "sky": emitter,
-            "ground": {"type": "disk", "to_world": mi.ScalarTransform4f().scale([1e4, 1e4, 1]),
-                       "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}}},
-        })
-        band_integrals = np.array(mi.render(scene, seed=seed)).ravel()
-        return np.pi * band_integrals / (2 * half)  # E = π L, per nm
-
-    cos_sun = float(sun_direction(sun.elevation, sun.azimuth)[2])
-    return horizontal(0.0, 1.0) / cos_sun, horizontal(1.0, 0.0)
 
 
 def scene_optics(a: np.ndarray, b: np.ndarray, bb: np.ndarray, direct_normal: np.ndarray, diffuse: np.ndarray,

@@ -75,26 +75,3 @@ class MediumOptics:
     iops: WaterIOPs
     particle_fraction: float = 0.0
     particle_g: float = 0.0
-
-
-def composition_optics(composition, wavelengths: np.ndarray | None = None) -> MediumOptics:
-    """IOPs and phase model of a :class:`~oceanrender.optics.components.WaterComposition`.
-
-    The phase function is a blend of the water's Rayleigh shape and one
-    Henyey–Greenstein lobe for all particles, weighted by b_p/b at 550 nm, with
-    g fitted to the particles' b_bp/b_p (Mitsuba's phase functions take one g
-    and one weight for all wavelengths, so they are set at 550 nm).
-    """
-    from .components import composition_iops, henyey_greenstein_g_from_bb_ratio  # noqa: PLC0415
-
-    wavelengths = np.arange(360.0, 831.0, 5.0) if wavelengths is None else np.asarray(wavelengths, float)
-    result = composition_iops(composition, wavelengths)
-    water = result.components["water"]
-    b_total = np.interp(550.0, wavelengths, result.scattering)
-    b_particles = b_total - np.interp(550.0, wavelengths, water.scattering)
-    bb_particles = np.interp(550.0, wavelengths, result.backscattering - water.backscattering)
-    fraction = float(np.clip(b_particles / b_total, 0.0, 1.0)) if b_total > 0 else 0.0
-    g = float(henyey_greenstein_g_from_bb_ratio(bb_particles / b_particles)) if b_particles > 0 else 0.0
-    iops = WaterIOPs(wavelengths=wavelengths, absorption=result.absorption, scattering=result.scattering,
-                     source="composition: " + "; ".join(result.notes) if getattr(result, "notes", None) else "composition")
-    return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g)

@@ -1,8 +1,5 @@
-"""Production rendering (issue 7): movies and contact sheets, denoising, animation.
-
-* :mod:`.movie` — an H.264 MP4 and a contact sheet from a finished sequence folder.
-* :mod:`.denoise` — Intel Open Image Denoise with albedo and normal AOVs from Mitsuba.
-* :mod:`.animation` — keyframed camera paths and sun motion (keyframes or a solar clock).
+"""Production: sequences on several processes or machines (:mod:`.distributed`, Dask) and
+movies with contact sheets (:mod:`.movie`). Built on ``oceanrender.pipeline``.
 
 Mitsuba is imported lazily inside the functions that need it, never at import time.
 """

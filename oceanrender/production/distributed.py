@@ -44,7 +44,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from ..config import Scene
+from ..scene import Scene
 
 #: This worker process's loaded sequence: (cache key, Sequence). One at a time.
 _WORKER_SEQUENCE: tuple[str, object] | None = None

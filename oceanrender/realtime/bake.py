@@ -22,8 +22,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from ..coastal.body import linear_reflectance
-from ..config import Scene
+from ..optics.seafloor import linear_reflectance
+from ..scene import Scene
 from ..optics.fourflux import MU_D, MU_U
 from ..optics.report import REPORT_WAVELENGTHS
 from ..render.scene import sun_direction
@@ -195,7 +195,7 @@ def scene_iops(scene: Scene, wavelengths: NDArray) -> tuple[NDArray, NDArray, ND
     scattering function is symmetric about 90°, Morel 1974).
     """
     from ..optics.water import pure_seawater_iops  # noqa: PLC0415
-    from ..pipeline import water_composition  # noqa: PLC0415
+    from ..optics.scene_water import water_composition  # noqa: PLC0415
 
     if scene.water.jerlov_type is not None:
         from ..optics.jerlov_types import iops_WilliamsonHollins2022  # noqa: PLC0415
@@ -218,7 +218,7 @@ def measure_scene_light(scene: Scene, settings: BakeSettings, white_XYZ: NDArray
     ``white_XYZ`` (e.g. a :class:`~oceanrender.pipeline.Sequence`'s) is measured
     with :func:`~oceanrender.render.renderer.adapting_white_XYZ` when not given.
     """
-    from ..optics.report import sky_irradiance_spectra  # noqa: PLC0415
+    from ..render.irradiance import sky_irradiance_spectra  # noqa: PLC0415
     from ..render.renderer import adapting_white_XYZ  # noqa: PLC0415
     from .sky import sky_radiance_spectra  # noqa: PLC0415
 
@@ -290,7 +290,7 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
     -------
     LutSet
     """
-    from ..geometry.sea import directional_spectrum  # noqa: PLC0415
+    from ..waves.sea import directional_spectrum  # noqa: PLC0415
     from ..pipeline import vision_for_scene  # noqa: PLC0415
 
     if list(light.wavelengths) != list(settings.wavelengths):
@@ -389,14 +389,14 @@ def finest_cell(scene: Scene) -> float:
     """Finest resolved cell of the scene's water geometry [m] (as the renderer's water body reports it)."""
     if scene.coastal is not None:
         return float(min(scene.coastal.spacing))
-    from ..geometry.sea import SeaSurface  # noqa: PLC0415
+    from ..waves.sea import SeaSurface  # noqa: PLC0415
 
     return float(SeaSurface(scene.ocean).finest_cell)
 
 
 def surface_roughness_alpha(scene: Scene, spectrum) -> float:
     """Beckmann α of the water surface [-], as :func:`oceanrender.pipeline.surface_roughness` sets it."""
-    from ..geometry.roughness import beckmann_alpha, unresolved_slope_variance  # noqa: PLC0415
+    from ..waves.roughness import beckmann_alpha, unresolved_slope_variance  # noqa: PLC0415
 
     if scene.water.surface_roughness != "auto":
         return float(scene.water.surface_roughness)

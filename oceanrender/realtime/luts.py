@@ -608,8 +608,8 @@ def bake_ripples(spectrum, patch_size: float, resolution: int, k_min: float, n_w
     oblique view the same offset is the first-order (small-slope) change of
     the drift and is added to the level-surface refraction.
     """
-    from ..geometry.cascades import BandLimitedSpectrum  # noqa: PLC0415
-    from ..geometry.fft_ocean import FFTOcean, OceanGrid  # noqa: PLC0415
+    from ..waves.cascades import BandLimitedSpectrum  # noqa: PLC0415
+    from ..waves.fft_ocean import FFTOcean, OceanGrid  # noqa: PLC0415
 
     grid = OceanGrid(int(resolution), float(patch_size))
     band = BandLimitedSpectrum(spectrum, float(k_min), np.inf, grid.dk)

@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..config import Scene
-from ..geometry.body import FrameGeometry
+from ..scene import Scene
+from ..surface.open_sea import FrameGeometry
 from ..pipeline import Sequence, adaptation_luminance, vision_for_scene
 from ..vision.brightness import adaptation_luminance_log_average
 from .bake import LutSet

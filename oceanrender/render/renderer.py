@@ -10,11 +10,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..config import Scene
-from ..geometry.body import FrameGeometry
+from ..optics.seafloor import linear_reflectance
 from ..optics.water import MediumOptics, WaterIOPs
+from ..scene import Scene
+from ..scene.motion import CameraPose, SunAngles
+from ..surface.frame import FrameGeometry, Terrain
 from .scene import (
     FILM_RANGE_NM,
+    apply_camera,
+    apply_sun,
     irregular_spectrum,
     perspective_sensor,
     sun_direction,
@@ -92,25 +96,25 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: d
     return mesh
 
 
+#: Id of the terrain mesh in the Mitsuba scene.
+TERRAIN_ID = "terrain"
+
 #: Name of the per-vertex rock coverage attribute of the terrain mesh.
 ROCK_ATTRIBUTE = "vertex_rock"
 
 
 def linear_albedo_spectrum(at_400_700: tuple[float, float]) -> dict:
     """An ``irregular`` reflectance spectrum over the film's range, linear through its 400 and 700 nm values."""
-    from ..coastal.body import linear_reflectance  # noqa: PLC0415
-
     wavelengths = np.array([FILM_RANGE_NM[0], 400.0, 700.0, FILM_RANGE_NM[1]])
     return irregular_spectrum(wavelengths, linear_reflectance(wavelengths, at_400_700))
 
 
-def terrain_shape(positions: np.ndarray, faces: np.ndarray, normals: np.ndarray, rock: np.ndarray,
-                  sand_albedo: tuple[float, float], rock_albedo: tuple[float, float]):
+def terrain_shape(terrain: Terrain):
     """The seafloor and beach as a Mitsuba mesh: Lambertian sand blended with rock by per-vertex coverage.
 
     It has no medium of its own: inside the water body, rays that reach it
     stay in the water. Reflectances [-] are linear in wavelength through their
-    400 and 700 nm values.
+    400 and 700 nm values (:func:`~oceanrender.optics.seafloor.linear_reflectance`).
     """
     import mitsuba as mi  # noqa: PLC0415
 
@@ -118,17 +122,22 @@ def terrain_shape(positions: np.ndarray, faces: np.ndarray, normals: np.ndarray,
     props["bsdf"] = mi.load_dict({
         "type": "blendbsdf",
         "weight": {"type": "mesh_attribute", "name": ROCK_ATTRIBUTE},
-        "bsdf_0": {"type": "diffuse", "reflectance": linear_albedo_spectrum(sand_albedo)},
-        "bsdf_1": {"type": "diffuse", "reflectance": linear_albedo_spectrum(rock_albedo)},
+        "bsdf_0": {"type": "diffuse", "reflectance": linear_albedo_spectrum(terrain.sand_albedo)},
+        "bsdf_1": {"type": "diffuse", "reflectance": linear_albedo_spectrum(terrain.rock_albedo)},
     })
-    mesh = mi.Mesh("terrain", len(positions), len(faces), props, has_vertex_normals=True)
-    mesh.add_attribute(ROCK_ATTRIBUTE, 1, mitsuba_floats(rock))
+    mesh = mi.Mesh(TERRAIN_ID, len(terrain.positions), len(terrain.faces), props, has_vertex_normals=True)
+    mesh.add_attribute(ROCK_ATTRIBUTE, 1, mitsuba_floats(terrain.rock))
     params = mi.traverse(mesh)
-    params["vertex_positions"] = mitsuba_floats(positions)
-    params["vertex_normals"] = mitsuba_floats(normals)
-    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
+    params["vertex_positions"] = mitsuba_floats(terrain.positions)
+    params["vertex_normals"] = mitsuba_floats(terrain.normals)
+    params["faces"] = mi.UInt32(np.ascontiguousarray(terrain.faces, dtype=np.uint32).ravel())
     params.update()
     return mesh
+
+
+def terrain_shapes(terrain: Terrain | None) -> dict:
+    """The scene-dict entries of a body's terrain: ``{"terrain": mesh}``, or none (open sea)."""
+    return {} if terrain is None else {TERRAIN_ID: terrain_shape(terrain)}
 
 
 def update_water_parameters(params, geometry: FrameGeometry) -> None:
@@ -173,7 +182,7 @@ class WaterRenderer:
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
               roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None,
-              sun_lobe_alpha: float | None = None, extra_shapes: dict | None = None,
+              sun_lobe_alpha: float | None = None, terrain: Terrain | None = None,
               in_water_clamp: float = 0.0) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
@@ -201,15 +210,13 @@ class WaterRenderer:
                                          spp or settings.output.spp),
             "sky": sunsky_emitter(settings.sun),
             WATER_ID: mesh,
-            **(extra_shapes or {}),
+            **terrain_shapes(terrain),
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
                    bands=settings.output.spectral_bands)
 
     def point_camera(self, position, target, fov: float) -> None:
         """Move the camera to ``position`` looking at ``target`` [m], horizontal ``fov`` [deg], in place."""
-        from ..production.animation import CameraPose, apply_camera  # noqa: PLC0415
-
         apply_camera(self.params, CameraPose(np.asarray(position, float), np.asarray(target, float), float(fov)),
                      sensor="sensor")
 
@@ -219,8 +226,6 @@ class WaterRenderer:
         Neither reloads the scene nor recompiles: ``sunsky``'s direction is a
         scene parameter, and the integrator holds its sun as an opaque value.
         """
-        from ..production.animation import SunAngles, apply_sun  # noqa: PLC0415
-
         apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
         integrator = self.scene.integrator()
         if getattr(integrator, "sun", None) is not None:
@@ -283,8 +288,6 @@ class WhiteMeter:
 
     def point_sun(self, elevation: float, azimuth: float) -> None:
         """Move the sun to ``elevation`` (> 0) and ``azimuth`` clockwise from north [deg], in place."""
-        from ..production.animation import SunAngles, apply_sun  # noqa: PLC0415
-
         apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
 
     def measure(self, seed: int = 0) -> np.ndarray:

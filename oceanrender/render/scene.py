@@ -14,8 +14,9 @@ import math
 import colour
 import numpy as np
 
-from ..config import CameraSettings, SunSettings
 from ..optics.water import MediumOptics, WaterIOPs
+from ..scene import CameraSettings, SunSettings
+from ..scene.motion import CameraPose, SunAngles
 
 #: Name of the CIE 1931 2° observer in colour-science.
 CIE1931 = "CIE 1931 2 Degree Standard Observer"
@@ -215,3 +216,32 @@ def volumetric_integrator(kind: str, max_depth: int, sun=None, water_ior: float 
         return split_integrator(int(max_depth), rr_depth=5, sun=sun, water_ior=water_ior,
                                 sun_lobe_alpha=sun_lobe_alpha, in_water_clamp=in_water_clamp)
     return {"type": kind, "max_depth": int(max_depth), "rr_depth": 5}
+
+
+def apply_camera(params, pose: CameraPose, sensor: str = "sensor") -> None:
+    """Move a loaded ``perspective`` sensor (``fov_axis = "x"``) to ``pose``, in place.
+
+    ``params`` is ``mi.traverse(scene)``; ``sensor`` the sensor's key in the
+    scene dict. Sets ``<sensor>.to_world`` (look-at, z up, as
+    :func:`look_at_transform`) and ``<sensor>.x_fov``
+    [deg], then ``params.update()``: no reload.
+    """
+    params[f"{sensor}.to_world"] = look_at_transform(pose.position, pose.target)
+    params[f"{sensor}.x_fov"] = float(pose.fov)
+    params.update()
+
+
+def apply_sun(params, angles: SunAngles, emitter: str = "sky") -> None:
+    """Point a loaded ``sunsky`` emitter's sun at ``angles``, in place (``<emitter>.sun_direction``).
+
+    Raises
+    ------
+    ValueError
+        The sun is not above the horizon (``sunsky`` is defined for elevation > 0).
+    """
+    if not angles.elevation > 0:
+        raise ValueError(f"the sun must be above the horizon for sunsky, got elevation {angles.elevation:g} deg")
+    import mitsuba as mi  # noqa: PLC0415
+
+    params[f"{emitter}.sun_direction"] = mi.Vector3f(*sun_direction(angles.elevation, angles.azimuth).tolist())
+    params.update()

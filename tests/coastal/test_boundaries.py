@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF
+from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal.analytic import simple_wave
 from oceanrender.coastal.boundaries import (

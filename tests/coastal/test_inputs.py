@@ -2,12 +2,13 @@
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF
+from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal import inputs
+from oceanrender.scene import arrays
 from oceanrender.coastal.boundaries import IncidentWave, Transmissive, Wall
-from oceanrender.config import scene_from_dict
-from oceanrender.config.scene import SceneError, load_scene
+from oceanrender.scene import scene_from_dict
+from oceanrender.scene.settings import SceneError, load_scene
 
 SMALL = {"cells": [16, 12], "size": [8.0, 6.0], "origin": [-4.0, -2.0]}
 
@@ -18,13 +19,13 @@ def coastal(**values):
 
 def test_plane_beach_matches_its_formula():
     c = coastal(slope=0.1, shoreline_y=0.5, offshore_depth=0.3, still_level=0.2)
-    bed = inputs.bathymetry(c)
-    x, y = inputs.cell_centres(c)
+    bed = arrays.bathymetry(c)
+    x, y = arrays.coastal_cell_centres(c)
     expected = np.maximum(0.2 - 0.1 * (y - 0.5), 0.2 - 0.3)[:, None] * np.ones(len(x))
     # elevations and depths cross 0 at the shoreline: relative to their largest value
     np.testing.assert_allclose(bed, expected, rtol=0, atol=ROUNDOFF * np.abs(expected).max())
     assert bed.shape == (12, 16)
-    depth = inputs.initial_depth(c, bed)
+    depth = arrays.initial_depth(c, bed)
     expected_depth = np.maximum(0.2 - bed, 0.0)
     np.testing.assert_allclose(depth, expected_depth, rtol=0, atol=ROUNDOFF * expected_depth.max())
 
@@ -59,7 +60,7 @@ def test_bad_inputs_are_refused_with_the_key(tmp_path, array, body, message):
 def test_array_bathymetry_is_read_relative_to_the_scene(tmp_path):
     bed = -np.linspace(-0.5, 1.5, 12)[:, None] * np.ones((1, 16))
     scene = load_scene(write_scene(tmp_path, 'bathymetry = "bathy.npy"\n', bed))
-    np.testing.assert_array_equal(inputs.bathymetry(scene.coastal), bed)  # .npy round-trips bit for bit
+    np.testing.assert_array_equal(arrays.bathymetry(scene.coastal), bed)  # .npy round-trips bit for bit
 
 
 def test_boundaries_put_the_waves_offshore():
@@ -72,7 +73,7 @@ def test_boundaries_put_the_waves_offshore():
 
 
 def test_spectral_waves_come_from_the_ocean_spectrum_and_travel_inshore():
-    from oceanrender.geometry.sea import directional_spectrum
+    from oceanrender.waves.sea import directional_spectrum
 
     scene = scene_from_dict({"name": "c", "ocean": {"wind_speed": 6.0, "wind_direction": -90.0},
                              "coastal": {**SMALL, "waves": "spectrum", "wave_count": 12}})
@@ -88,6 +89,6 @@ def test_spectral_waves_come_from_the_ocean_spectrum_and_travel_inshore():
 
 @pytest.mark.parametrize("cover", [0.0, 0.15, 0.5])
 def test_rock_covers_the_requested_fraction(cover):
-    mask = inputs.rock_mask(coastal(cells=[200, 150], rock_cover=cover))
+    mask = arrays.rock_mask(coastal(cells=[200, 150], rock_cover=cover))
     assert mask.min() >= 0 and mask.max() <= 1
     assert mask.mean() == pytest.approx(cover, abs=0.03)

@@ -5,7 +5,7 @@ import pytest
 
 from oceanrender.cli import main
 from oceanrender.coastal.simulation import read_frame_fields, run_simulation
-from oceanrender.config import scene_from_dict
+from oceanrender.scene import scene_from_dict
 from oceanrender.io.frames import read_exr
 
 TINY_COASTAL = {"cells": [24, 16], "size": [12.0, 8.0], "origin": [-6.0, -2.0], "slope": 0.2, "offshore_depth": 0.8,

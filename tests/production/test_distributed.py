@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from oceanrender.cli import main
-from oceanrender.config import scene_from_dict
+from oceanrender.scene import scene_from_dict
 from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import frame_paths, render_sequence
 from oceanrender.production.distributed import render_distributed, sequence_key, worker_threads
@@ -173,7 +173,7 @@ def test_cli_refuses_bad_dask_options_before_any_work(tmp_path, capsys):
 
 
 def test_a_coastal_scene_simulates_once_on_the_client_and_renders_from_its_fields(variant, cluster, tmp_path):
-    from coastal.test_simulation import TINY_COASTAL  # noqa: PLC0415 (tests/ is on sys.path under pytest)
+    from tests.coastal.test_simulation import TINY_COASTAL  # noqa: PLC0415 (tests/ is on sys.path under pytest)
 
     local, client = cluster
     scene = scene_from_dict({"name": "tinycoast", "output": {"frames": [0, 3], "fps": 10.0, "resolution": [24, 16],

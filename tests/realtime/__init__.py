@@ -7,7 +7,7 @@ project's wavelength grid, and a sky that is black below the horizon.
 
 import numpy as np
 
-from oceanrender.config import scene_from_dict
+from oceanrender.scene import scene_from_dict
 from oceanrender.optics.report import REPORT_WAVELENGTHS
 from oceanrender.realtime.bake import BakeSettings, SceneLight, bake_lut_set
 from oceanrender.realtime.luts import envmap_directions, spectra_to_XYZ

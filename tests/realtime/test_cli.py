@@ -4,7 +4,7 @@ import json
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF32
+from tests.tolerances import ROUNDOFF32
 
 from oceanrender.cli import main
 from oceanrender.io.frames import read_exr

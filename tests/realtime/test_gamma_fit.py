@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF
+from tests.tolerances import ROUNDOFF
 
 from oceanrender.realtime.compare import delta_E_2000, display_to_Lab, error_stats
 from oceanrender.realtime.gamma_fit import FitView, fit_gamma, mean_delta_E

@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF
+from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal.simulation import run_simulation
 from oceanrender.realtime.gbuffer import KIND_WATER, camera_for_scene

@@ -4,9 +4,9 @@ import math
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF, ROUNDOFF32
+from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
-from oceanrender.coastal.body import linear_reflectance
+from oceanrender.optics.seafloor import linear_reflectance
 from oceanrender.optics.fresnel import N_AIR, diffuse_reflectance_Fresnel, reflectance_Fresnel
 from oceanrender.optics.report import REPORT_WAVELENGTHS
 from oceanrender.pipeline import vision_for_scene
@@ -192,7 +192,7 @@ def test_refraction_through_a_tilted_facet_matches_snell():
 
 
 def test_ripple_maps_are_tileable_and_carry_the_spectrum_slopes():
-    from oceanrender.geometry.sea import directional_spectrum
+    from oceanrender.waves.sea import directional_spectrum
 
     scene = synthetic_scene(ocean={"wind_speed": 4.0, "wind_direction": -90.0, "fetch": 20000.0})
     maps = bake_ripples(directional_spectrum(scene.ocean), 1.0, 64, k_min=np.pi / 0.125, n_water=N, seed=3)

@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 import pytest
-from tolerances import ROUNDOFF
+from tests.tolerances import ROUNDOFF
 
 from oceanrender.optics.fresnel import N_AIR, reflectance_Fresnel
 from oceanrender.realtime.bake import BakeSettings

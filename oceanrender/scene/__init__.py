@@ -1,0 +1,25 @@
+"""Scene: TOML files → frozen, validated settings, and time — frame times, camera and sun motion
+(:mod:`.motion`), the arrays a scene names (:mod:`.arrays`). The bottom stage: it knows no physics
+beyond its inputs and imports only ``oceanrender.io``."""
+
+from .settings import (
+    CameraSettings,
+    FoamSettings,
+    MeshSettings,
+    OceanSettings,
+    OutputSettings,
+    RenderSettings,
+    Scene,
+    SceneError,
+    SunSettings,
+    VisionSettings,
+    WaterSettings,
+    load_scene,
+    scene_from_dict,
+    with_overrides,
+)
+
+__all__ = [
+    "CameraSettings", "FoamSettings", "MeshSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
+    "SunSettings", "VisionSettings", "WaterSettings", "load_scene", "scene_from_dict", "with_overrides",
+]

@@ -1,0 +1,687 @@
+"""Scene files: TOML parsed into typed, immutable, validated settings.
+
+A scene file is data only (``tomllib``: nothing in it is executed). Every
+section is a frozen pydantic model that forbids unknown keys and checks
+ranges, so a bad file is refused before any work starts, with one line
+naming the file, the key and what was expected. Defaults live here and only
+here.
+
+Conventions: z up, +x east, +y north; lengths in m, angles in degrees in the
+file (converted where used), wind in m s⁻¹, luminance in cd m⁻².
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Annotated, Literal
+
+from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+
+
+class SceneError(ValueError):
+    """A scene file that cannot be used; the message is one line for the user."""
+
+
+class _Section(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=False)
+
+
+Vec3 = tuple[float, float, float]
+
+
+class OutputSettings(_Section):
+    """What to render and where [frames, pixels, samples]."""
+
+    frames: tuple[Annotated[int, Field(ge=0)], Annotated[int, Field(ge=1)]] = Field(
+        (0, 3), description="half-open frame range [start, end)"
+    )
+    fps: float = Field(24.0, gt=0, le=1000, description="frames per second [s⁻¹]")
+    resolution: tuple[Annotated[int, Field(ge=1, le=16384)], Annotated[int, Field(ge=1, le=16384)]] = (320, 180)
+    spp: int = Field(32, ge=1, le=1 << 20, description="samples per pixel")
+    directory: str = Field("outputs", min_length=1, description="output root; frames go to <directory>/<scene name>/")
+    spectral_bands: int = Field(0, ge=0, le=470, description="> 0: also write frame_NNNN_spectral.exr with this many "
+                                                             "equal bands of mean radiance over 360-830 nm")
+
+    @field_validator("frames")
+    @classmethod
+    def _ordered(cls, value: tuple[int, int]) -> tuple[int, int]:
+        if value[1] <= value[0]:
+            raise ValueError(f"expected [start, end) with end > start, got {list(value)}")
+        return value
+
+
+class RenderSettings(_Section):
+    """Light transport settings."""
+
+    variant: str = Field("auto", description="'auto' or a Mitsuba spectral variant")
+    integrator: Literal["volpath", "volpathmis", "split"] = Field(
+        "split", description="'split' follows both Fresnel lobes at the first water hit (less noise, 1.3x time)"
+    )
+    max_depth: int = Field(12, ge=2, le=1024, description="maximum path length [vertices]")
+    sun_sampling: bool = Field(
+        True, description="('split' only) sample the sunlight refracted into the water at every in-water vertex"
+    )
+    in_water_clamp: float = Field(
+        0.0, ge=0, le=1e6,
+        description="('split') firefly clamp: largest in-water radiance of one sample, in multiples of the "
+                    "mean radiance of a white Lambertian surface under the scene's sun and sky; 0: off (unbiased)")
+    denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
+    white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
+    seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")
+
+    @field_validator("variant")
+    @classmethod
+    def _spectral(cls, value: str) -> str:
+        if value != "auto" and "spectral" not in value:
+            raise ValueError(f"expected 'auto' or a spectral variant (e.g. 'llvm_ad_spectral'), got {value!r}")
+        return value
+
+
+class OceanSettings(_Section):
+    """Open-sea geometry: the wave spectrum and how the surface is synthesised.
+
+    ``model = "FFT"`` is Tessendorf's FFT sea, as ``cascades`` patches of
+    incommensurate sizes (the largest is ``patch_size``); "sum of sines" and
+    "Gerstner" draw ``wave_count`` components from the same spectrum.
+    """
+
+    model: Literal["FFT", "sum of sines", "Gerstner"] = "FFT"
+    spectrum: Literal["Phillips 2001", "Pierson-Moskowitz 1964", "JONSWAP 1973", "TMA 1985"] = "JONSWAP 1973"
+    spreading: Literal["cos2", "Mitsuyasu 1975", "Hasselmann 1980", "Donelan-Banner 1985"] | None = Field(
+        None, description="directional spreading; none = the spectrum's own (Phillips) or Mitsuyasu 1975"
+    )
+    wind_speed: float = Field(7.0, gt=0, le=60, description="wind speed 10 m above the sea [m s⁻¹]")
+    wind_direction: float = Field(30.0, ge=-360, le=360, description="direction the wind blows toward, counter-clockwise from +x (east) [deg]")
+    fetch: float = Field(1.0e5, gt=0, le=1.0e7, description="fetch of JONSWAP/TMA [m]")
+    gamma: float = Field(3.3, ge=1, le=10, description="JONSWAP peak enhancement γ [-]")
+    wave_depth: float = Field(float("inf"), gt=0, description="water depth of the dispersion relation and TMA [m]; inf = deep")
+    alpha: float | None = Field(None, gt=0, le=0.1, description="Phillips/PM constant α [-] (default 8.1e-3)")
+    small_wave_length: float = Field(0.0, ge=0, le=10, description="suppression length ℓ of small waves [m]")
+    swell_height: float = Field(0.0, ge=0, le=30, description="significant height of an added swell [m]")
+    swell_period: float = Field(10.0, gt=0, le=40, description="swell peak period [s]")
+    swell_direction: float = Field(0.0, ge=-360, le=360, description="swell direction of travel, counter-clockwise from +x [deg]")
+    swell_spreading_s: float = Field(25.0, ge=0, le=1000, description="cos-2s spreading exponent of the swell [-]")
+    patch_size: float = Field(128.0, gt=0, le=100_000, description="side of the largest periodic patch [m]")
+    cascades: int = Field(1, ge=1, le=6, description="number of FFT patches of decreasing size [-]")
+    resolution: int = Field(256, ge=8, le=8192, description="FFT grid points per side of each patch")
+    choppiness: float = Field(0.8, ge=0, le=3, description="horizontal displacement scale λ [-]")
+    loop_period: float = Field(0.0, ge=0, description="period after which the sea repeats exactly [s]; 0 = never")
+    seed: int = Field(1, ge=0, description="random seed of the wave amplitudes")
+    wave_count: int = Field(256, ge=1, le=4096, description="components of the sum-of-sines / Gerstner models")
+    gerstner_steepness: float = Field(0.8, ge=0, le=3, description="Gerstner steepness q [-]")
+    fractal_gamma: float = Field(0.0, ge=0, le=2, description="weight γ of the fractal detail ζ = η + γ η_fractal [-]; 0 = off")
+    fractal_size: int = Field(512, ge=16, le=4096, description="points per side of the periodic fractal tile (power of 2)")
+
+    @field_validator("fractal_size")
+    @classmethod
+    def _power_of_two(cls, value: int) -> int:
+        if value & (value - 1):
+            raise ValueError(f"expected a power of two, got {value}")
+        return value
+
+    @field_validator("resolution")
+    @classmethod
+    def _even(cls, value: int) -> int:
+        if value % 2:
+            raise ValueError(f"expected an even number of grid points, got {value}")
+        return value
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "OceanSettings":
+        if self.spectrum == "Phillips 2001" and self.spreading is not None:
+            raise ValueError("spreading must be left out for 'Phillips 2001' (it has its own cos² spreading)")
+        if self.alpha is not None and self.spectrum in ("JONSWAP 1973", "TMA 1985"):
+            raise ValueError("alpha follows from the fetch for JONSWAP/TMA; leave it out")
+        return self
+
+
+class MeshSettings(_Section):
+    """The rendered water body.
+
+    ``kind = "patch"``: one FFT patch as a closed box (the whole patch).
+    ``kind = "radial"``: a camera-centred polar grid with square cells growing
+    with distance, out to ``outer_radius`` (the horizon), sampling every cascade.
+    """
+
+    kind: Literal["patch", "radial"] = "patch"
+    inner_radius: float = Field(0.5, gt=0, description="radius of the first ring around the camera's nadir [m]")
+    outer_radius: float = Field(8000.0, gt=0, le=1.0e6, description="radius of the last ring [m]")
+    segments: int = Field(384, ge=8, le=16384, description="vertices per ring [-]")
+
+    @model_validator(mode="after")
+    def _radii(self) -> "MeshSettings":
+        if self.outer_radius <= self.inner_radius:
+            raise ValueError("outer_radius must exceed inner_radius")
+        return self
+
+
+class FoamSettings(_Section):
+    """Foam from folding of the surface (Jacobian J < threshold), built up and decaying over time."""
+
+    enabled: bool = False
+    threshold: float = Field(0.3, ge=-1, le=1, description="foam forms where the Jacobian J is below this [-]")
+    decay_time: float = Field(2.0, gt=0, le=60, description="e-folding time of foam decay [s]")
+    gain: float = Field(1.0, gt=0, le=100, description="production rate per unit of J below the threshold [s⁻¹]")
+    history: float = Field(3.0, gt=0, le=10, description="history simulated before each frame, in decay times [-]")
+    albedo: float = Field(0.8, ge=0, le=1, description="reflectance of fully foamed water [-]")
+
+
+class WaterSettings(_Section):
+    """The water body and its medium."""
+
+    depth: float = Field(50.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]")
+    ior: float = Field(1.333, ge=1.0, le=2.0, description="refractive index of water [-]")
+    iop_table: str = Field("pure_seawater.csv", min_length=1, description="table of a, b [m⁻¹] in spectra/")
+    jerlov_type: Literal["IB", "II", "III", "1C", "3C", "5C"] | None = Field(
+        None, description="a Jerlov water type's measured IOPs (Williamson & Hollins 2022) instead of the table")
+    surface_roughness: float | Literal["auto"] = Field(
+        "auto", description="Beckmann α of the surface [-], or 'auto' for the slopes of the waves finer than the mesh"
+    )
+
+    @field_validator("surface_roughness")
+    @classmethod
+    def _roughness(cls, value: float | str) -> float | str:
+        if not isinstance(value, str) and not 0 <= value <= 1:
+            raise ValueError(f"expected 'auto' or a Beckmann α in [0, 1], got {value}")
+        return value
+
+
+class CompositionSettings(_Section):
+    """What is in the water (issue 4): a preset and/or concentrations of each component.
+
+    Keys left out take the preset's value (or zero without a preset).
+    """
+
+    preset: Literal["clear open ocean", "green coastal", "turbid brown estuary"] | None = None
+    temperature_c: float | None = Field(None, ge=-2, le=40, description="water temperature [°C]")
+    salinity_psu: float | None = Field(None, ge=0, le=42, description="salinity [PSU]")
+    chlorophyll_mg_m3: float | None = Field(None, ge=0, le=1000, description="chlorophyll a [mg m⁻³]")
+    soil_g_m3: float | None = Field(None, ge=0, le=10_000, description="soil particles [g m⁻³]")
+    kaolinite_g_m3: float | None = Field(None, ge=0, le=10_000, description="kaolinite clay [g m⁻³]")
+    illite_g_m3: float | None = Field(None, ge=0, le=10_000, description="illite clay [g m⁻³]")
+    calcite_g_m3: float | None = Field(None, ge=0, le=10_000, description="limestone/calcite particles [g m⁻³]")
+    cdom_a440_per_m: float | None = Field(None, ge=0, le=100, description="CDOM absorption at 440 nm [m⁻¹]")
+    cdom_slope_per_nm: float | None = Field(None, ge=0.005, le=0.03, description="CDOM spectral slope [nm⁻¹]")
+
+
+#: Interpolations of keyframed motion (see :mod:`oceanrender.scene.motion`).
+Interpolation = Literal["monotone cubic", "Catmull-Rom"]
+
+
+def _first_key_fills(data, fields: dict[str, object], section: str) -> dict:
+    """Fill the static keys of an animated section from its motion; refuse ones that contradict it.
+
+    ``fields`` maps each static key to its value from the motion. A value
+    written in the file must equal it (to 1e-9), so that a file, and the
+    same settings dumped and validated again (:func:`with_overrides`), mean
+    one thing.
+    """
+    data = dict(data)
+    for name, value in fields.items():
+        given = data.get(name)
+        if given is None:
+            data[name] = value
+            continue
+        try:
+            same = all(abs(float(a) - float(b)) <= 1e-9 * max(1.0, abs(float(b)))
+                       for a, b in zip(_as_tuple(given), _as_tuple(value), strict=True))
+        except (TypeError, ValueError):
+            same = False
+        if not same:
+            raise ValueError(f"{name} = {given!r} contradicts the motion, which gives {value!r} here; "
+                             f"leave {name} out when [{section}] is animated")
+    return data
+
+
+def _as_tuple(value) -> tuple:
+    return tuple(value) if isinstance(value, (list, tuple)) else (value,)
+
+
+def _key_value(key, name: str):
+    return key.get(name) if isinstance(key, dict) else getattr(key, name, None)
+
+
+class SunKeySettings(_Section):
+    """One sun keyframe (``[[sun.keys]]``)."""
+
+    time: float = Field(..., ge=-1.0e6, le=1.0e6, description="key time, t = frame / fps [s]")
+    elevation: float = Field(..., gt=0, le=90, description="sun elevation above the horizon at the key [deg]")
+    azimuth: float = Field(..., ge=-720, le=720, description="sun azimuth clockwise from north (+y) [deg]; "
+                                                             "write 350 then 370 to pass through north")
+
+
+class SolarClockSettings(_Section):
+    """The sun over a place as a clock runs (``[sun.clock]``): NOAA solar position at start + time_scale·t."""
+
+    latitude: float = Field(..., ge=-90, le=90, description="geographic latitude, north positive [deg]")
+    longitude: float = Field(..., ge=-180, le=180, description="longitude, east positive [deg]")
+    start: AwareDatetime = Field(..., description="clock instant of scene time t = 0, ISO 8601 with a UTC offset, "
+                                                  "e.g. 2024-06-21T18:30:00+02:00")
+    time_scale: float = Field(1.0, ge=-1.0e6, le=1.0e6,
+                              description="simulated (clock) seconds per scene second [-]; 600 = 10 min per second")
+    apparent: bool = Field(True, description="use the refracted (apparent) elevation, as seen, or the geometric one")
+    pressure: float = Field(1010.0, gt=0, le=1100, description="surface pressure for the refraction [hPa]")
+    temperature: float = Field(10.0, ge=-90, le=60, description="air temperature for the refraction [°C]")
+
+    def angles_at(self, t: float) -> tuple[float, float]:
+        """(elevation, azimuth) of the sun at scene time t [s] [deg]."""
+        from .motion import SolarClock  # noqa: PLC0415
+
+        clock = SolarClock(self.latitude, self.longitude, self.start, self.time_scale, self.apparent,
+                           self.pressure, self.temperature)
+        return tuple(clock.at(t))
+
+
+class SunSettings(_Section):
+    """Sun and sky: Mitsuba's ``sunsky`` (Hosek & Wilkie 2012/2013).
+
+    The sun may move: ``[[sun.keys]]`` (at least two keyframes of elevation
+    and azimuth, joined by ``interpolation``) or ``[sun.clock]`` (a place and
+    a clock), not both. Then ``elevation`` and ``azimuth`` are those of the
+    motion at its first key (keys) or at t = 0 s (clock); leave them out (if
+    written they must equal those).
+    """
+
+    elevation: float = Field(40.0, gt=0, le=90, description="sun elevation above the horizon [deg]")
+    azimuth: float = Field(200.0, ge=-360, le=360, description="sun azimuth, clockwise from north (+y) [deg]")
+    turbidity: float = Field(3.0, ge=1, le=10, description="atmospheric turbidity [-]")
+    ground_albedo: float = Field(0.1, ge=0, le=1, description="ground albedo of the sky model [-]")
+    sun_scale: float = Field(1.0, ge=0, description="scale of the solar radiance [-]")
+    sky_scale: float = Field(1.0, ge=0, description="scale of the sky radiance [-]")
+    keys: tuple[SunKeySettings, ...] = Field((), description="sun keyframes (time [s], elevation, azimuth [deg])")
+    clock: SolarClockSettings | None = Field(None, description="a place and a clock instead of keyframes")
+    interpolation: Interpolation = Field("monotone cubic", description="curve through the sun keyframes")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _static_from_motion(cls, data):
+        if not isinstance(data, dict):
+            return data
+        keys, clock = data.get("keys") or (), data.get("clock")
+        if keys and clock is not None:
+            raise ValueError("give either [[sun.keys]] or [sun.clock], not both")
+        if keys and isinstance(keys, (list, tuple)):
+            first = keys[0]
+            elevation, azimuth = _key_value(first, "elevation"), _key_value(first, "azimuth")
+            # NOTE: a key out of range is reported with its own key path, not through the static fields.
+            if (isinstance(elevation, (int, float)) and isinstance(azimuth, (int, float))
+                    and 0 < elevation <= 90 and -720 <= azimuth <= 720):
+                return _first_key_fills(data, {"elevation": float(elevation),
+                                               "azimuth": float(azimuth) % 360.0}, "sun")
+        if clock is not None:
+            try:
+                settings = SolarClockSettings.model_validate(clock)
+            except ValidationError:
+                return data  # reported with its key when the field itself is validated
+            elevation, azimuth = settings.angles_at(0.0)
+            if not elevation > 0:
+                raise ValueError(f"[sun.clock]: the sun is below the horizon at start ({settings.start.isoformat()}, "
+                                 f"t = 0 s): elevation {elevation:.2f} deg; sunsky needs it above")
+            return _first_key_fills(data, {"elevation": elevation, "azimuth": azimuth}, "sun")
+        return data
+
+    @field_validator("keys")
+    @classmethod
+    def _key_times(cls, value: tuple[SunKeySettings, ...]) -> tuple[SunKeySettings, ...]:
+        if value:
+            _check_key_times([key.time for key in value], "sun")
+        return value
+
+    @property
+    def animated(self) -> bool:
+        """Whether the sun moves (keys or a clock)."""
+        return bool(self.keys) or self.clock is not None
+
+
+def _check_key_times(times: list[float], section: str) -> None:
+    if len(times) < 2:
+        raise ValueError(f"[[{section}.keys]] needs at least 2 keyframes, got {len(times)}")
+    for i in range(1, len(times)):
+        if not times[i] > times[i - 1]:
+            raise ValueError(f"key times must strictly increase, but key {i + 1} at time = {times[i]:g} s "
+                             f"follows time = {times[i - 1]:g} s")
+
+
+class CameraKeySettings(_Section):
+    """One camera keyframe (``[[camera.keys]]``)."""
+
+    time: float = Field(..., ge=-1.0e6, le=1.0e6, description="key time, t = frame / fps [s]")
+    position: Vec3 = Field(..., description="camera position [m]")
+    target: Vec3 = Field(..., description="point looked at [m]")
+    fov: float = Field(..., gt=0, lt=180, description="horizontal field of view [deg]")
+
+    @model_validator(mode="after")
+    def _distinct(self) -> "CameraKeySettings":
+        if self.position == self.target:
+            raise ValueError(f"camera key at time = {self.time:g} s: target must differ from position")
+        return self
+
+
+class CameraSettings(_Section):
+    """Pinhole camera (perspective).
+
+    The camera may move: ``[[camera.keys]]``, at least two keyframes of
+    position, target and fov at strictly increasing times, joined by
+    ``interpolation``. Then ``position``, ``target`` and ``fov`` are the
+    first key's; leave them out (if written they must equal it).
+    """
+
+    position: Vec3 = (0.0, 0.0, 5.0)
+    target: Vec3 = (0.0, 40.0, 0.0)
+    fov: float = Field(60.0, gt=0, lt=180, description="horizontal field of view [deg]")
+    keys: tuple[CameraKeySettings, ...] = Field((), description="camera keyframes (time [s], position, target [m], "
+                                                                "fov [deg])")
+    interpolation: Interpolation = Field("monotone cubic", description="curve through the camera keyframes")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _static_from_keys(cls, data):
+        if not isinstance(data, dict) or not data.get("keys") or not isinstance(data["keys"], (list, tuple)):
+            return data
+        first = data["keys"][0]
+        values = {name: _key_value(first, name) for name in ("position", "target", "fov")}
+        if any(value is None for value in values.values()):
+            return data  # the key itself is reported as incomplete
+        try:
+            values = {"position": tuple(map(float, values["position"])),
+                      "target": tuple(map(float, values["target"])), "fov": float(values["fov"])}
+        except (TypeError, ValueError):
+            return data
+        if not 0 < values["fov"] < 180 or len(values["position"]) != 3 or len(values["target"]) != 3:
+            return data  # reported with the key's own path
+        return _first_key_fills(data, values, "camera")
+
+    @field_validator("keys")
+    @classmethod
+    def _key_times(cls, value: tuple[CameraKeySettings, ...]) -> tuple[CameraKeySettings, ...]:
+        if value:
+            _check_key_times([key.time for key in value], "camera")
+        return value
+
+    @model_validator(mode="after")
+    def _distinct(self) -> "CameraSettings":
+        if self.position == self.target:
+            raise ValueError("camera target must differ from its position")
+        return self
+
+    @property
+    def animated(self) -> bool:
+        """Whether the camera moves (keys)."""
+        return bool(self.keys)
+
+
+class VisionSettings(_Section):
+    """The vision model Φ: brightness and chromatic adaptation, display."""
+
+    brightness: Literal["Ward 1994", "Ferwerda 1996"] = "Ward 1994"
+    chromatic_transform: Literal["Von Kries", "Bradford", "CAT02", "CAT16", "XYZ Scaling"] = "Von Kries"
+    adaptation_luminance: float | Literal["frame", "daylight"] = Field(
+        "frame", description="world adaptation luminance [cd m⁻²], 'frame' for each frame's log-average, or "
+                             "'daylight' for an 18 % grey card under the scene's sun and sky"
+    )
+    display_luminance: float = Field(100.0, gt=0, le=10_000, description="display white luminance [cd m⁻²]")
+
+    @field_validator("adaptation_luminance")
+    @classmethod
+    def _positive(cls, value: float | str) -> float | str:
+        if not isinstance(value, str) and not value > 0:
+            raise ValueError(f"expected 'frame', 'daylight' or a luminance > 0 cd/m², got {value}")
+        return value
+
+
+#: Array files accepted for bathymetry and the initial surface (rows = y south → north, columns = x).
+ARRAY_SUFFIXES = (".npy", ".exr")
+
+
+class CoastalSettings(_Section):
+    """Coastal zone: the 2D shallow-water equations over a bathymetry (``oceanrender.coastal``).
+
+    The grid has ``cells = [nx, ny]`` cells over ``size = [Lx, Ly]`` m with its
+    south-west corner at ``origin``. ``bathymetry = "plane beach"`` is a beach
+    rising towards the south: z_b = still_level − slope·(y − shoreline_y), no
+    deeper than ``offshore_depth`` (the sea is to the north); a path to a
+    ``.npy`` or ``.exr`` file (relative to the scene file; shape (ny, nx),
+    elevation in m) is read instead. Waves enter through ``offshore_side``.
+    """
+
+    size: tuple[Annotated[float, Field(gt=0)], Annotated[float, Field(gt=0)]] = Field(
+        (40.0, 30.0), description="domain extent along x and y [m]")
+    cells: tuple[Annotated[int, Field(ge=4, le=8192)], Annotated[int, Field(ge=4, le=8192)]] = Field(
+        (320, 240), description="cells along x and y [-]")
+    origin: tuple[float, float] = Field((-20.0, -6.0), description="world (x, y) of the grid's south-west corner [m]")
+    bathymetry: str = Field("plane beach", description="'plane beach', or a .npy/.exr file of bed elevation [m]")
+    still_level: float = Field(0.0, description="still-water level [m]")
+    shoreline_y: float = Field(0.0, description="('plane beach') y where the bed meets the still level [m]")
+    slope: float = Field(0.05, gt=0, le=1, description="('plane beach') rise of the bed per metre towards the shore [-]")
+    offshore_depth: float = Field(2.0, gt=0, description="('plane beach') greatest still-water depth [m]")
+    initial_surface: str = Field("still", description="'still', or a .npy/.exr file of the surface elevation η [m]")
+    waves: Literal["train", "spectrum", "none"] = Field(
+        "train", description="incident waves: a monochromatic 'train', components of the [ocean] 'spectrum', or 'none'")
+    wave_height: float = Field(0.3, ge=0, le=10, description="('train') crest-to-trough height [m]")
+    wave_period: float = Field(5.0, gt=0, le=30, description="('train') period [s]")
+    wave_direction: float = Field(-90.0, ge=-360, le=360,
+                                  description="('train') direction of travel, counter-clockwise from +x [deg]")
+    wave_count: int = Field(32, ge=1, le=1024, description="('spectrum') number of components")
+    offshore_side: Literal["north", "south", "east", "west"] = Field("north", description="side the waves enter")
+    lateral: Literal["wall", "transmissive"] = Field("transmissive", description="the two sides beside the offshore one")
+    order: Literal[1, 2] = Field(2, description="1: first-order scheme; 2: second order")
+    limiter: Literal["MC", "van Leer", "minmod"] = Field(
+        "MC", description="(order 2) slope limiter; the dissertation's is minmod, MC halves the error here")
+    cfl: float = Field(0.4, gt=0, le=1, description="Courant number [-]; ≤ 1 at first order, ≤ 0.5 at second")
+    h_min: float = Field(0.002, ge=0, le=1, description="dry threshold: cells with depth ≤ h_min are land [m]")
+    manning: float = Field(0.02, ge=0, le=1, description="Manning friction coefficient [s m^-1/3]")
+    spinup: float = Field(20.0, ge=0, le=1e5, description="simulated time before frame 0 [s]")
+    checkpoint_interval: float = Field(10.0, gt=0, description="simulated time between checkpoints [s]")
+    sand_albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)]] = Field(
+        (0.25, 0.45), description="sand reflectance at 400 and 700 nm (linear in between) [-]")
+    rock_albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)]] = Field(
+        (0.06, 0.10), description="rock reflectance at 400 and 700 nm [-]")
+    rock_cover: float = Field(0.15, ge=0, le=1, description="fraction of the seafloor that is rock [-]")
+    seed: int = Field(3, ge=0, description="seed of the rock pattern and of the spectral wave phases")
+
+    @field_validator("cfl")
+    @classmethod
+    def _cfl_bound(cls, value: float, info) -> float:
+        if info.data.get("order") == 2 and value > 0.5:
+            raise ValueError(f"must be ≤ 0.5 at order 2 (the scheme's positivity bound), got {value}")
+        return value
+
+    @field_validator("bathymetry", "initial_surface")
+    @classmethod
+    def _source(cls, value: str, info) -> str:
+        word = "plane beach" if info.field_name == "bathymetry" else "still"
+        if value != word and not value.lower().endswith(ARRAY_SUFFIXES):
+            raise ValueError(f"expected {word!r} or a {'/'.join(ARRAY_SUFFIXES)} file, got {value!r}")
+        return value
+
+    @property
+    def spacing(self) -> tuple[float, float]:
+        """Cell size (dx, dy) [m]."""
+        return self.size[0] / self.cells[0], self.size[1] / self.cells[1]
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """Array shape (ny, nx) of the fields."""
+        return self.cells[1], self.cells[0]
+
+
+class Scene(_Section):
+    """A whole scene; ``name`` defaults to the file's stem."""
+
+    name: str = Field(..., min_length=1, pattern=r"^[A-Za-z0-9_.-]+$")
+    output: OutputSettings = OutputSettings()
+    render: RenderSettings = RenderSettings()
+    ocean: OceanSettings = OceanSettings()
+    mesh: MeshSettings = MeshSettings()
+    foam: FoamSettings = FoamSettings()
+    water: WaterSettings = WaterSettings()
+    composition: CompositionSettings | None = None
+    coastal: CoastalSettings | None = None
+    sun: SunSettings = SunSettings()
+    camera: CameraSettings = CameraSettings()
+    vision: VisionSettings = VisionSettings()
+
+    @field_validator("camera")
+    @classmethod
+    def _camera_over_frames(cls, value: CameraSettings, info) -> CameraSettings:
+        output = info.data.get("output")
+        if value.animated and output is not None:
+            from .motion import frame_times, scene_camera_path  # noqa: PLC0415
+
+            path = scene_camera_path(value)
+            for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
+                try:
+                    path.at(t)
+                except ValueError as exc:
+                    raise ValueError(f"[[camera.keys]] at frame {frame}: {exc}") from None
+        return value
+
+    @field_validator("sun")
+    @classmethod
+    def _sun_over_frames(cls, value: SunSettings, info) -> SunSettings:
+        output = info.data.get("output")
+        if value.animated and output is not None:
+            from .motion import frame_times, scene_sun_motion  # noqa: PLC0415
+
+            motion = scene_sun_motion(value)
+            where = "[sun.clock]" if value.clock is not None else "[[sun.keys]]"
+            for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
+                elevation = motion.at(t).elevation
+                if not elevation > 0:
+                    raise ValueError(f"{where}: the sun is below the horizon at frame {frame} (t = {t:g} s): "
+                                     f"elevation {elevation:.2f} deg; sunsky needs it above over the frame range")
+        return value
+
+    @field_validator("composition")
+    @classmethod
+    def _one_water(cls, value, info):
+        water = info.data.get("water")
+        if value is not None and water is not None and water.jerlov_type is not None:
+            raise ValueError("give either [composition] or [water] jerlov_type, not both")
+        return value
+
+
+def _key_path(location: tuple) -> str:
+    parts: list[str] = []
+    for item in location:
+        if isinstance(item, int) and parts:
+            parts[-1] += f"[{item}]"
+        else:
+            parts.append(str(item))
+    if not parts:
+        return "(top level)"
+    if len(parts) == 1:
+        return parts[0]
+    return f"[{'.'.join(parts[:-1])}] {parts[-1]}"
+
+
+def _field_help(location: tuple) -> str | None:
+    """The description (meaning and unit) of the field at ``location``."""
+    model: type[BaseModel] = Scene
+    info = None
+    for item in location:
+        if isinstance(item, int):
+            continue
+        fields = getattr(model, "model_fields", None)
+        if not fields or item not in fields:
+            return None
+        info = fields[item]
+        model = _section_model(info.annotation)
+    return info.description if info is not None else None
+
+
+def _section_model(annotation) -> type[BaseModel] | None:
+    """The section model of a field's annotation: ``Model``, ``Model | None`` or ``tuple[Model, ...]``."""
+    from typing import get_args  # noqa: PLC0415
+
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in get_args(annotation):
+        if isinstance(arg, type) and issubclass(arg, BaseModel):
+            return arg
+    return None
+
+
+def _describe(error: dict) -> str:
+    kind = error["type"]
+    location = error["loc"]
+    if kind == "extra_forbidden":
+        return "unknown key"
+    if kind == "missing":
+        return "expected more values" if location and isinstance(location[-1], int) else "required key is missing"
+    message = error["msg"].removeprefix("Value error, ")
+    shown = error.get("input")
+    if "got" not in message and not (isinstance(shown, (dict, list)) and len(repr(shown)) > 60):
+        message = f"{message} (got {shown!r})"
+    meaning = _field_help(location)
+    return f"{message}; {meaning}" if meaning else message
+
+
+def scene_from_dict(data: dict, source: str = "<dict>") -> Scene:
+    """Validate a parsed scene mapping; raise :class:`SceneError` on the first problem."""
+    try:
+        return Scene.model_validate(data)
+    except ValidationError as exc:
+        first = exc.errors()[0]
+        raise SceneError(f"{source}: {_key_path(first['loc'])}: {_describe(first)}") from None
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Read and validate a TOML scene file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The scene file.
+
+    Raises
+    ------
+    SceneError
+        One line naming the file, the key and what was expected.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read scene file ({exc.strerror or exc})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+    data.setdefault("name", path.stem)
+    coastal = data.get("coastal")
+    if isinstance(coastal, dict):
+        # Array files are named relative to the scene file.
+        for key in ("bathymetry", "initial_surface"):
+            value = coastal.get(key)
+            if isinstance(value, str) and value.lower().endswith(ARRAY_SUFFIXES):
+                coastal[key] = str((path.parent / value).resolve())
+    scene = scene_from_dict(data, str(path))
+    check_scene_inputs(scene, str(path))
+    return scene
+
+
+def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
+    """Read and check the data files a scene names (coastal arrays); SceneError naming the key."""
+    if scene.coastal is None:
+        return
+    from .arrays import check_coastal_inputs  # noqa: PLC0415
+
+    try:
+        check_coastal_inputs(scene.coastal)
+    except ValueError as exc:
+        raise SceneError(f"{source}: [coastal] {exc}") from None
+
+
+def with_overrides(scene: Scene, source: str = "command line", **sections: dict) -> Scene:
+    """Return a copy of ``scene`` with some keys replaced, validated again.
+
+    ``with_overrides(scene, output={"spp": 4})`` validates as a file would, so
+    command-line overrides are held to the same ranges.
+    """
+    data = scene.model_dump()
+    for section, values in sections.items():
+        if values:
+            data[section] = {**data[section], **values}
+    return scene_from_dict(data, source)

@@ -1,0 +1,77 @@
+"""What the renderer needs of a water body, the same for the open sea and the coast.
+
+A body (:class:`~oceanrender.surface.open_sea.WaterBody`,
+:class:`~oceanrender.surface.coastal_body.CoastalBody`) has fixed triangles
+(``faces``) and, per frame time t, a :class:`FrameGeometry` (vertex positions,
+normals, per-vertex foam); for the surface roughness it gives its wave spectrum,
+its finest resolved cell and its total slope variance; and it may carry a
+:class:`Terrain` (the coastal seafloor and beach) rendered inside the water.
+All plain arrays in metres: the renderer turns them into Mitsuba shapes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Protocol
+
+import numpy as np
+from numpy.typing import NDArray
+
+
+@dataclass(frozen=True)
+class FrameGeometry:
+    """One frame's water body.
+
+    Attributes
+    ----------
+    positions, normals : (V, 3) float32   Vertex positions [m] and unit normals.
+    foam : (V,) float32 or None            Foam coverage per vertex [-] (0 off the surface).
+    """
+
+    positions: NDArray[np.float32]
+    normals: NDArray[np.float32]
+    foam: NDArray[np.float32] | None
+
+
+@dataclass(frozen=True)
+class Terrain:
+    """A seafloor and beach mesh inside the water body, with its reflectance.
+
+    Attributes
+    ----------
+    positions, normals : (V, 3) float32   Vertex positions [m] and unit normals.
+    faces : (F, 3) int                     Triangles, counter-clockwise seen from above.
+    rock : (V,) float32                    Rock coverage per vertex [-]: 0 sand, 1 rock.
+    sand_albedo, rock_albedo : (float, float)   Lambertian reflectances [-] at 400 and 700 nm,
+                                                linear in wavelength between and beyond.
+    """
+
+    positions: NDArray[np.float32]
+    faces: NDArray[np.integer]
+    normals: NDArray[np.float32]
+    rock: NDArray[np.float32]
+    sand_albedo: tuple[float, float]
+    rock_albedo: tuple[float, float]
+
+
+class WaterSurface(Protocol):
+    """The interface of a water body that :mod:`oceanrender.pipeline` and the renderer use."""
+
+    faces: NDArray[np.integer]
+
+    @property
+    def spectrum(self) -> Callable:
+        """The directional wave spectrum Ψ(kx, ky) [m⁴] of the waves the body carries."""
+
+    @property
+    def finest_cell(self) -> float:
+        """Finest resolved spacing of the geometry [m]."""
+
+    def frame(self, t: float) -> FrameGeometry:
+        """The body at scene time t [s]."""
+
+    def total_slope_variance(self, roughness: float) -> float:
+        """Mean-square slope of all its waves [-], given the unresolved Beckmann α ``roughness``."""
+
+    def terrain(self) -> Terrain | None:
+        """The terrain rendered inside the water, or None (open sea)."""

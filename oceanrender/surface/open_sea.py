@@ -1,0 +1,150 @@
+"""The closed water body of a frame: fixed triangles, vertices that move with the sea.
+
+Two layouts (scene ``[mesh] kind``): ``"patch"``, one periodic FFT patch as a
+closed box (:mod:`.patch_mesh`), and ``"radial"``, a camera-centred polar grid out
+to the horizon (:mod:`.radial_mesh`). Foam, when enabled, is a per-vertex
+coverage in [0, 1] accumulated from the folding of the surface over a window
+of history before each frame, so every frame follows from (scene, t) alone.
+
+With a moving camera (``[[camera.keys]]``) the radial grid follows it: at
+time t its rest points are the grid translated to the camera's (x, y) at t;
+the triangles never change.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..scene import Scene
+from ..waves.fft_ocean import OceanFields, OceanGrid
+from ..waves.foam import foam_step
+from .frame import FrameGeometry, Terrain
+from .patch_mesh import water_body_faces, water_body_vertices
+from .radial_mesh import RadialGrid, radial_body_faces, radial_body_vertices
+from ..waves.roughness import unresolved_slope_variance
+from ..waves.sea import SeaSurface, SurfacePoints
+
+
+#: Most history steps of the foam accumulation per frame [-].
+FOAM_STEPS = 4
+
+
+class WaterBody:
+    """Builds the frames of a scene's water body; the triangles never change."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self.sea = SeaSurface(scene.ocean)
+        mesh = scene.mesh
+        self.camera_path = None
+        self._moved_grid: tuple[float, RadialGrid] | None = None  # (t, grid) of the last grid_at(t)
+        if mesh.kind == "radial":
+            from ..scene.motion import camera_motion  # noqa: PLC0415
+
+            self.camera_path = camera_motion(scene)
+            center = (scene.camera.position[0], scene.camera.position[1])
+            self.radial = RadialGrid.square_cells(center, mesh.inner_radius, mesh.outer_radius, mesh.segments)
+            self.faces = radial_body_faces(self.radial.rings, self.radial.segments)
+            self.rest_x, self.rest_y = self.radial.points.T
+            self.spacing = self.radial.spacing
+        else:
+            self.radial = None
+            grid = OceanGrid(scene.ocean.resolution, scene.ocean.patch_size)
+            self.faces = water_body_faces(grid.resolution)
+            self.rest_x, self.rest_y = grid.x, grid.y
+            self.spacing = None
+        self.vertex_count = int(self.faces.max()) + 1
+
+    @property
+    def spectrum(self):
+        """The directional wave spectrum Ψ(kx, ky) [m⁴] of the sea."""
+        return self.sea.spectrum
+
+    @property
+    def finest_cell(self) -> float:
+        """Finest resolved grid spacing of the geometry [m]."""
+        return self.sea.finest_cell
+
+    def total_slope_variance(self, roughness: float) -> float:
+        """Mean-square slope of all the sea's waves [-]: the spectrum's, from waves 10 patches long to 1 mm.
+
+        (``roughness`` is the part already in that integral.)
+        """
+        k_min = 2.0 * np.pi / (10.0 * self.scene.ocean.patch_size)
+        return unresolved_slope_variance(self.spectrum, k_min)
+
+    def terrain(self) -> Terrain | None:
+        """No terrain in the open sea."""
+        return None
+
+    def grid_at(self, t: float) -> RadialGrid | None:
+        """The radial grid of time t [s]: centred under the camera at t (None for the patch mesh).
+
+        The grid of the last t asked for is kept: a frame asks three times
+        (surface, foam, mesh), and each new grid recomputes its points.
+        """
+        if self.radial is None or self.camera_path is None:
+            return self.radial
+        if self._moved_grid is None or self._moved_grid[0] != t:
+            x, y = self.camera_path.at(t).position[:2]
+            self._moved_grid = (t, replace(self.radial, center=(float(x), float(y))))
+        return self._moved_grid[1]
+
+    def rest_points(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Rest positions (x, y) of the surface vertices at time t [s] [m]."""
+        if self.camera_path is None:
+            return self.rest_x, self.rest_y
+        x, y = self.grid_at(t).points.T
+        return x, y
+
+    def surface(self, t: float) -> SurfacePoints:
+        """The displaced surface at the mesh's rest points at time t [s]."""
+        return self.sea.sample(*self.rest_points(t), t, self.spacing)
+
+    def foam(self, t: float, jacobian_now: NDArray | None = None) -> NDArray[np.float64]:
+        """Foam coverage at the rest points of time t [s], accumulated over the preceding history.
+
+        With a moving radial grid the history is accumulated at the rest
+        points of time t (fixed points of the sea), not along the grid's path.
+
+        The accumulation (:func:`~oceanrender.waves.foam.foam_step`) starts
+        from clear water ``history × decay_time`` before t and advances in steps
+        of half a decay time (``FOAM_STEPS`` at most), so it is frame-rate
+        independent and reproducible for any t.
+        """
+        foam = self.scene.foam
+        window = foam.history * foam.decay_time
+        steps = int(min(FOAM_STEPS, max(2, np.ceil(2 * foam.history))))
+        times = t - window + window * np.arange(1, steps + 1) / steps
+        rest_x, rest_y = self.rest_points(t)
+        coverage = np.zeros(np.shape(rest_x))
+        for i, step_time in enumerate(times):
+            if i == steps - 1 and jacobian_now is not None:
+                jacobian = jacobian_now  # the last step is t itself: reuse the frame's own J
+            else:
+                jacobian = self.sea.jacobian(rest_x, rest_y, float(step_time), self.spacing)
+            coverage = foam_step(coverage, jacobian, window / steps, foam.threshold, foam.decay_time, foam.gain)
+        return coverage
+
+    def frame(self, t: float) -> FrameGeometry:
+        """The closed body at time t [s]."""
+        depth = self.scene.water.depth
+        surface = self.surface(t)
+        if self.radial is not None:
+            positions, normals = radial_body_vertices(self.grid_at(t), surface.displacement, surface.normals, depth)
+        else:
+            d = surface.displacement
+            fields = OceanFields(d[..., 2], d[..., 0], d[..., 1], np.zeros_like(d[..., 0]), np.zeros_like(d[..., 0]),
+                                 surface.jacobian, surface.normals)
+            positions, normals = water_body_vertices(fields, self.scene.ocean.patch_size, depth)
+        foam = None
+        if self.scene.foam.enabled:
+            top = self.foam(t, surface.jacobian)
+            if self.radial is None:  # the patch mesh repeats row/column 0 at the far edge
+                top = np.pad(top, ((0, 1), (0, 1)), mode="wrap")
+            foam = np.zeros(len(positions), np.float32)
+            foam[: top.size] = top.ravel()
+        return FrameGeometry(positions, normals, foam)

@@ -1,0 +1,218 @@
+"""The split-surface integrator: same expectation as volpath, less noise, sky on misses.
+
+Real renders of a tiny scene (24×16 px): three large water pools side by
+side, with a smooth ``dielectric`` surface, a ``roughdielectric`` one
+(Beckmann α = 0.085), and the rough one blended with 15 % white foam
+(``blendbsdf``), each enclosing a homogeneous medium, under ``sunsky``, with
+a black wall to the south that can put the pools in its shadow.
+
+NOTE: all tests render the same three scenes with the same kernels: the
+camera, the sun's direction and the medium's coefficients are changed in
+place as opaque values. A changed literal (e.g. ``sky.sun_scale``) would
+compile a new kernel, ~10 s for the split integrator on two CPU cores.
+"""
+
+import numpy as np
+import pytest
+from tests.tolerances import ROUNDOFF32
+
+from oceanrender.render.integrator import SPLIT_INTEGRATOR, register, split_integrator
+from oceanrender.render.scene import look_at_transform, xyz_film
+
+pytestmark = pytest.mark.render
+
+#: Largest accepted |z| of the difference of two image means, in combined standard errors.
+#: With ~10³ degrees of freedom per standard error, |z| > 4 has probability 6e-5 per
+#: comparison for an unbiased pair: 6 comparisons here give a false-alarm rate < 1e-3.
+Z_MAX = 4.0
+
+#: Sun towards the south-west, 40° high; the camera looks north (+y) or south.
+SUN = [0.3, -0.72, 0.63]
+#: Sun due south, 5° high: the wall's shadow covers the pools (no sunlight in the water).
+LOW_SUN = [0.0, -0.99619, 0.08716]
+#: Top and bottom of the black wall along y = −12 m [m]: its shadow under LOW_SUN reaches
+#: y = 159 m, and it reaches below the pools' bottoms (there is no ground: sunlight
+#: would otherwise come in under it).
+WALL_TOP, WALL_BOTTOM = 15.0, -5.0
+VOLPATH = {"type": "volpath", "max_depth": 12, "rr_depth": 5}
+
+#: Camera 2 m above the water, 25° down: all water in view.
+LOOK_NORTH = ((0.0, 0.0, 2.0), (0.0, 4.29, 0.0))
+LOOK_SOUTH = ((0.0, 120.0, 2.0), (0.0, 115.71, 0.0))  # towards the sun: glints
+
+
+#: Coverage of the foam blended into the third pool's surface [-].
+FOAM = 0.15
+
+
+def pool(x0, x1, bsdf, foam=0.0):
+    """A 3 m deep box of water between x0 and x1 [m], y from −10 to 130 m, top at z = 0."""
+    import mitsuba as mi
+
+    surface = {"type": bsdf, "int_ior": 1.333, "ext_ior": 1.0}
+    if bsdf == "roughdielectric":
+        surface.update(distribution="beckmann", alpha=0.085)
+    if foam:
+        surface = {"type": "blendbsdf", "weight": foam, "bsdf_0": surface,
+                   "bsdf_1": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 0.8}}}
+    return {
+        "type": "cube",
+        "to_world": mi.ScalarTransform4f().translate([(x0 + x1) / 2, 60.0, -1.5]).scale([(x1 - x0) / 2, 70.0, 1.5]),
+        "bsdf": surface,
+        "interior": {"type": "homogeneous", "sigma_t": 0.3, "albedo": 0.8},
+    }
+
+
+def pools_scene(integrator, spp):
+    """Smooth pool on the left, rough one in the middle, foamy one on the right, under sun and sky."""
+    import mitsuba as mi
+
+    register()
+    return mi.load_dict({
+        "type": "scene",
+        "integrator": integrator,
+        "sensor": {"type": "perspective", "fov": 60.0, "fov_axis": "x", "to_world": look_at_transform(*LOOK_NORTH),
+                   "film": xyz_film(24, 16), "sampler": {"type": "independent", "sample_count": spp}},
+        "sky": {"type": "sunsky", "sun_direction": SUN, "turbidity": 3.0},
+        # NOTE: 1 cm gaps, so that neighbouring walls are not coplanar.
+        "smooth": pool(-100.0, -1.5, "dielectric"),
+        "rough": pool(-1.49, 1.49, "roughdielectric"),
+        "foamy": pool(1.5, 100.0, "roughdielectric", foam=FOAM),
+        "wall": {"type": "rectangle",
+                 "to_world": mi.ScalarTransform4f().translate([0.0, -12.0, (WALL_TOP + WALL_BOTTOM) / 2])
+                 .rotate([1.0, 0.0, 0.0], 90.0).scale([110.0, (WALL_TOP - WALL_BOTTOM) / 2, 1.0]),
+                 "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 0.0}}},
+    })
+
+
+def configure(scene, camera, sun, albedo, sigma_t=0.3):
+    """Move the camera and the sun (unit vector towards it), change the water, in place.
+
+    ``sigma_t`` is the water's extinction coefficient [m⁻¹], ``albedo`` its
+    single-scattering albedo [-]. They are set as opaque values: a Python
+    float would become a literal of the kernel, compiled anew for each value.
+    """
+    import drjit as dr
+    import mitsuba as mi
+
+    params = mi.traverse(scene)
+    params["sensor.to_world"] = look_at_transform(*camera)
+    params["sky.sun_direction"] = mi.Vector3f(sun)
+    for key in params.keys():
+        if key.endswith("interior_medium.albedo.value.value"):
+            params[key] = dr.opaque(mi.Float, albedo)
+        if key.endswith("interior_medium.sigma_t.value.value"):
+            params[key] = dr.opaque(mi.Float, sigma_t)
+    params.update()
+
+
+def renders(scene, seeds, spp):
+    """(seeds, H, W, 3) films [W m⁻² sr⁻¹]."""
+    import mitsuba as mi
+
+    return np.stack([np.array(mi.render(scene, seed=int(s), spp=spp)) for s in seeds])
+
+
+def image_mean_and_standard_error(films):
+    """Mean over pixels and seeds of each channel, and its standard error.
+
+    Pixels are independent (box filter: each sample lands in one pixel) and
+    each seed is an independent render, so Var(image mean) = Σ_p Var_p / (P² K)
+    with Var_p the per-pixel sample variance over the K seeds.
+    """
+    k = films.shape[0]
+    pixels = films.reshape(k, -1, films.shape[-1])
+    n_pixels = pixels.shape[1]
+    mean = pixels.mean(axis=(0, 1))
+    se = np.sqrt(pixels.var(axis=0, ddof=1).sum(axis=0) / k) / n_pixels
+    return mean, se
+
+
+def relative_noise(films):
+    """rms over pixels of the difference of two renders / √2, over the mean luminance channel."""
+    y = films[..., 1]
+    return np.std((y[0] - y[1]) / np.sqrt(2.0)) / y.mean()
+
+
+@pytest.fixture(scope="module")
+def scenes(variant):
+    # NOTE: all scenes are loaded before the first render. Loading any Mitsuba object
+    # (a scene, even a sampler) adds instances to the registries that the kernels'
+    # virtual calls dispatch over, so every kernel compiled before is compiled again.
+    return {
+        "volpath": pools_scene(VOLPATH, 16),
+        "split": pools_scene(split_integrator(12, 5), 16),
+        "emitted": pools_scene({"type": "path", "max_depth": 1}, 4),  # directly seen radiance
+    }
+
+
+def split_and_volpath(scenes):
+    return {name: scenes[name] for name in ("volpath", "split")}
+
+
+@pytest.mark.parametrize(
+    "camera, sun, albedo, sigma_t",
+    [
+        # Pools in the wall's shadow, bright scattering water: the transmitted lobe (η²
+        # radiance scaling, continuation inside the medium) carries much of the image.
+        # NOTE: sunlit scattering water makes rare, huge samples (in volpath as well).
+        (LOOK_NORTH, LOW_SUN, 0.8, 0.3),
+        # Towards the sun, opaque black water: glints through next-event estimation and
+        # MIS with the reflection lobe (rough pools), a delta reflection (smooth pool).
+        # NOTE: with clear water, sunlight reflected by the pools' bottoms into the
+        # camera makes rare, huge samples (in volpath as well) that swamp the test.
+        (LOOK_SOUTH, SUN, 0.0, 5.0),
+    ],
+    ids=["sky-scattering-water", "sun-glint"],
+)
+def test_split_has_the_same_expectation_as_volpath(scenes, camera, sun, albedo, sigma_t):
+    means, errors = {}, {}
+    for name, scene in split_and_volpath(scenes).items():
+        configure(scene, camera, sun, albedo, sigma_t)
+        means[name], errors[name] = image_mean_and_standard_error(renders(scene, seeds=range(4), spp=128))
+    z = (means["split"] - means["volpath"]) / np.hypot(errors["split"], errors["volpath"])
+    assert np.all(np.abs(z) < Z_MAX), f"z = {z}, means {means}, standard errors {errors}"
+    # The test can see a bias of 2.5 %: Z_MAX standard errors are below that.
+    assert np.all(Z_MAX * np.hypot(errors["split"], errors["volpath"]) < 0.025 * means["volpath"]), errors
+
+
+def test_split_reduces_the_noise_of_the_reflected_sky(scenes):
+    # Pools in the shade, dark water: what the camera sees is mostly reflected sky,
+    # which volpath estimates from the F ≈ 2-8 % of samples that choose reflection.
+    noise = {}
+    for name, scene in split_and_volpath(scenes).items():
+        configure(scene, LOOK_NORTH, LOW_SUN, albedo=0.05)
+        noise[name] = relative_noise(renders(scene, seeds=(11, 12), spp=16))
+    assert noise["split"] < 0.5 * noise["volpath"], noise
+
+
+def test_a_ray_that_misses_the_water_returns_the_sky_radiance(scenes):
+    # Looking up at the sky only. ``path`` with max_depth = 1 returns exactly the
+    # radiance of the emitter a camera ray meets; the wavelengths and pixel
+    # positions are drawn by the film before the integrator runs, so the images
+    # agree to rounding. Every sample of the split integrator is volpath's here,
+    # which draws the same random numbers: those images agree too.
+    looking_up = ((0.0, 0.0, 2.0), (0.0, 3.0, 4.0))
+    films = {}
+    for name, scene in scenes.items():
+        configure(scene, looking_up, SUN, albedo=0.8)
+        films[name] = renders(scene, seeds=(5,), spp=4)
+    assert films["emitted"].min() > 0
+    # float32 films from differently compiled kernels (FMA contraction may differ): pixels > 0.
+    np.testing.assert_allclose(films["split"], films["emitted"], rtol=ROUNDOFF32)
+    np.testing.assert_allclose(films["split"], films["volpath"], rtol=ROUNDOFF32)
+
+
+def test_split_integrator_entry_and_registration(variant):
+    import mitsuba as mi
+
+    assert split_integrator(12) == {"type": SPLIT_INTEGRATOR, "max_depth": 12, "rr_depth": 5}
+    register()
+    register()  # idempotent
+    integrator = mi.load_dict(split_integrator(7, 3))
+    assert isinstance(integrator, mi.SamplingIntegrator)
+    assert (integrator.max_depth, integrator.rr_depth) == (7, 3)
+    with pytest.raises(ValueError):
+        split_integrator(-2)
+    with pytest.raises(ValueError):
+        split_integrator(12, rr_depth=0)

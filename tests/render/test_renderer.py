@@ -1,0 +1,91 @@
+"""Real Mitsuba renders at tiny sizes: film units, adapting white, per-frame updates."""
+
+import math
+
+import colour
+import numpy as np
+import pytest
+from tests.tolerances import ROUNDOFF
+
+from oceanrender.scene import scene_from_dict
+from oceanrender.render.renderer import K_M, adapting_white_XYZ, repair_non_finite
+from oceanrender.render.scene import CIE1931, perspective_sensor, sun_direction, sunsky_emitter, xyz_film
+from oceanrender.vision.model import VisionModel
+
+pytestmark = pytest.mark.render
+
+
+def cmf_integrals():
+    cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(360, 830, 1))
+    return cmfs.values.sum(axis=0)  # Δλ = 1 nm
+
+
+def test_sun_direction_convention():
+    # Unit vectors (scale 1); cos 90° is 6e-17, not 0.
+    np.testing.assert_allclose(sun_direction(90, 0), [0, 0, 1], atol=ROUNDOFF)
+    np.testing.assert_allclose(sun_direction(0, 0), [0, 1, 0], atol=ROUNDOFF)  # north = +y
+    np.testing.assert_allclose(sun_direction(0, 90), [1, 0, 0], atol=ROUNDOFF)  # east = +x
+    assert np.linalg.norm(sun_direction(33, 123)) == pytest.approx(1)
+
+
+def test_film_integrates_radiance_against_the_cmfs(variant):
+    # A constant environment of spectral radiance 1 W m⁻² sr⁻¹ nm⁻¹ must give
+    # X, Y, Z = ∫x̄ dλ, ∫ȳ dλ, ∫z̄ dλ ≈ 106.86 over 360-830 nm (exact XYZ, not RGB-derived).
+    import mitsuba as mi
+
+    scene = mi.load_dict({
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": 1},
+        "sensor": {"type": "perspective", "film": xyz_film(32, 32),
+                   "sampler": {"type": "independent", "sample_count": 64}},
+        "environment": {"type": "constant", "radiance": {"type": "spectrum", "value": 1.0}},
+    })
+    film = np.array(mi.render(scene, seed=3))
+    measured = film.reshape(-1, 3).mean(axis=0)
+    # 65 536 spectral samples per channel: Monte Carlo error ≲ 0.5 %.
+    np.testing.assert_allclose(measured, cmf_integrals(), rtol=0.01)
+
+
+def test_adapting_white_is_daylight(variant):
+    scene = scene_from_dict({"name": "t", "sun": {"elevation": 40.0}})
+    white = adapting_white_XYZ(scene, spp=512)
+    # Horizontal illuminance under a clear sky with the sun at 40°: roughly 50-100 klx.
+    illuminance = math.pi * white[1]
+    assert 4.0e4 < illuminance < 1.2e5
+    # Its chromaticity lies within 0.01 in uv of the CIE daylight locus (CCT 4500-7500 K).
+    cct = colour.xy_to_CCT(colour.XYZ_to_xy(white), method="Hernandez 1999")
+    assert 4500 < cct < 7500
+    daylight_xy = colour.temperature.CCT_to_xy_CIE_D(cct)
+    uv = colour.xy_to_Luv_uv(colour.XYZ_to_xy(white))
+    assert np.linalg.norm(uv - colour.xy_to_Luv_uv(daylight_xy)) < 0.01
+
+
+def test_white_lambertian_under_the_adapting_illuminant_maps_to_display_white(variant):
+    import mitsuba as mi
+
+    settings = scene_from_dict({"name": "t", "sun": {"elevation": 35.0, "turbidity": 4.0}})
+    white = adapting_white_XYZ(settings, spp=2048)
+    camera = settings.camera.model_copy(update={"position": (0.0, 0.0, 2.0), "target": (0.0, 0.5, 0.0), "fov": 30.0})
+    scene = mi.load_dict({
+        "type": "scene",
+        "integrator": {"type": "path", "max_depth": 2},
+        "sensor": perspective_sensor(camera, xyz_film(16, 16), spp=256),
+        "sky": sunsky_emitter(settings.sun),
+        "ground": {"type": "disk", "to_world": mi.ScalarTransform4f().scale([1e4, 1e4, 1]),
+                   "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}}},
+    })
+    xyz = K_M * np.array(mi.render(scene, seed=1)).reshape(-1, 3).mean(axis=0)
+    np.testing.assert_allclose(xyz, white, rtol=0.03)  # the same white, seen by a camera
+    rgb = VisionModel().apply(xyz, white, adaptation_luminance=white[1])
+    assert rgb.min() > 0
+    np.testing.assert_allclose(rgb / rgb.mean(), 1.0, atol=0.02)  # neutral: R = G = B
+
+
+def test_nan_pixels_are_repaired_from_neighbours():
+    image = np.ones((5, 5, 3))
+    image[2, 2] = np.nan
+    image[0, 0, 1] = np.inf
+    fixed, count = repair_non_finite(image)
+    assert count == 2
+    assert np.all(np.isfinite(fixed))
+    np.testing.assert_allclose(fixed, 1.0)

@@ -1,0 +1,224 @@
+"""Scene files: validation errors name the file, the key and what was expected."""
+
+from pathlib import Path
+
+import pytest
+from tests.tolerances import ROUNDOFF
+
+from oceanrender.scene import SceneError, load_scene, scene_from_dict, with_overrides
+
+SCENES = Path(__file__).resolve().parents[2] / "scenes"
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "bad_scene.toml"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.name)
+def test_shipped_scenes_load(path):
+    scene = load_scene(path)
+    assert scene.name == path.stem
+
+
+def test_defaults_fill_missing_sections(tmp_path):
+    scene = load_scene(write(tmp_path, "[ocean]\nwind_speed = 9.0\n"))
+    assert scene.ocean.wind_speed == 9.0
+    assert scene.output.frames == (0, 3)
+    assert scene.name == "bad_scene"
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("[ocean]\nwind_speed = -1.0\n", "[ocean] wind_speed: Input should be greater than 0"),
+        ("[ocean]\nwind_speed = 0\n", "[ocean] wind_speed"),
+        ("[ocean]\nwindspeed = 5.0\n", "[ocean] windspeed: unknown key"),
+        ("[oceans]\n", "oceans: unknown key"),
+        ("[ocean]\nresolution = 255\n", "[ocean] resolution: expected an even number"),
+        ("[ocean]\nspectrum = 'Foo 1999'\n", "[ocean] spectrum: Input should be 'Phillips 2001'"),
+        ("[output]\nframes = [5, 2]\n", "[output] frames: expected [start, end) with end > start"),
+        ("[output]\nresolution = [320]\n", "[output] resolution[1]: expected more values"),
+        ("[sun]\nelevation = 120\n", "[sun] elevation: Input should be less than or equal to 90"),
+        ("[camera]\nposition = [0, 0, 1]\ntarget = [0, 0, 1]\n", "camera target must differ"),
+        ("[vision]\nbrightness = 'Reinhard'\n", "[vision] brightness: Input should be 'Ward 1994' or 'Ferwerda 1996'"),
+        ("[vision]\nadaptation_luminance = -5.0\n", "[vision] adaptation_luminance: expected 'frame', 'daylight' or a luminance > 0"),
+        ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or a spectral variant"),
+        ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
+        ("[ocean\n", "not valid TOML"),
+    ],
+)
+def test_errors_are_one_line_with_file_and_key(tmp_path, text, expected):
+    path = write(tmp_path, text)
+    with pytest.raises(SceneError) as info:
+        load_scene(path)
+    message = str(info.value)
+    assert message.startswith(str(path)), message
+    assert expected in message
+    assert "\n" not in message
+
+
+def test_error_includes_unit(tmp_path):
+    with pytest.raises(SceneError, match=r"m s⁻¹"):
+        load_scene(write(tmp_path, "[ocean]\nwind_speed = -1.0\n"))
+
+
+def test_missing_file():
+    with pytest.raises(SceneError, match="cannot read scene file"):
+        load_scene("no/such/scene.toml")
+
+
+def test_settings_are_immutable():
+    scene = scene_from_dict({"name": "x"})
+    with pytest.raises(Exception, match="frozen"):
+        scene.output.spp = 3
+
+
+def test_overrides_are_validated_like_the_file():
+    scene = scene_from_dict({"name": "x"})
+    assert with_overrides(scene, output={"spp": 4}).output.spp == 4
+    with pytest.raises(SceneError, match=r"^command line: \[output\] spp"):
+        with_overrides(scene, output={"spp": 0})
+
+
+def test_toml_cannot_execute_anything(tmp_path):
+    # A string that would be code in a Python-based config stays an invalid value here.
+    with pytest.raises(SceneError, match=r"\[ocean\] wind_speed"):
+        load_scene(write(tmp_path, "[ocean]\nwind_speed = \"__import__('os').getcwd()\"\n"))
+
+
+# ---- Animation: [[camera.keys]], [[sun.keys]], [sun.clock] ----
+
+CAMERA_KEYS = """
+[[camera.keys]]
+time = 0.0
+position = [0, 0, 5]
+target = [0, 60, 0]
+fov = 60
+[[camera.keys]]
+time = 2.0
+position = [10, 5, 8]
+target = [-20, 60, 0]
+fov = 50
+"""
+
+SUN_KEYS = """
+[[sun.keys]]
+time = 0.0
+elevation = 40
+azimuth = 350
+[[sun.keys]]
+time = 2.0
+elevation = 20
+azimuth = 370
+"""
+
+#: A sun that dips to 0.5° at t = 1 s and climbs steeply after.
+DIPPING_SUN_KEYS = """
+[[sun.keys]]
+time = 0.0
+elevation = 10
+azimuth = 350
+[[sun.keys]]
+time = 1.0
+elevation = 0.5
+azimuth = 370
+[[sun.keys]]
+time = 2.0
+elevation = 60
+azimuth = 380
+"""
+
+CLOCK = """
+[sun.clock]
+latitude = 43.3
+longitude = 5.37
+start = {start}
+time_scale = {scale}
+"""
+
+
+def test_animated_scene_parses_and_fills_the_still_keys_from_the_motion(tmp_path):
+    from oceanrender.scene.motion import camera_motion, sun_motion
+
+    scene = load_scene(write(tmp_path, "[camera]\ninterpolation = 'Catmull-Rom'\n" + CAMERA_KEYS + SUN_KEYS))
+    assert scene.camera.animated and scene.sun.animated
+    assert scene.camera.position == (0, 0, 5) and scene.camera.target == (0, 60, 0) and scene.camera.fov == 60
+    assert (scene.sun.elevation, scene.sun.azimuth) == (40, 350)
+    path = camera_motion(scene)
+    assert path.interpolation == "Catmull-Rom"
+    # Coordinates can be 0: round-off relative to the largest coordinate of the keys [m].
+    scale = max(abs(c) for key in scene.camera.keys for c in (*key.position, *key.target))
+    for key in scene.camera.keys:  # the path of the file passes through its keys
+        position, target, fov = path.at(key.time)
+        assert tuple(position) == pytest.approx(key.position, abs=ROUNDOFF * scale)
+        assert tuple(target) == pytest.approx(key.target, abs=ROUNDOFF * scale)
+        assert fov == pytest.approx(key.fov, rel=ROUNDOFF)
+    # Through north, 350 -> 370: 0 in [0, 360), compared as an angle (a value a last bit
+    # below 360 wraps to 359.99…), round-off relative to a full turn.
+    azimuth = sun_motion(scene).at(1.0).azimuth
+    assert (azimuth + 180.0) % 360.0 - 180.0 == pytest.approx(0.0, abs=ROUNDOFF * 360.0)
+    # A round trip through model_dump (command-line overrides) keeps the same motion.
+    again = with_overrides(scene, output={"spp": 2})
+    assert again.camera == scene.camera and again.sun == scene.sun
+
+
+def test_still_scenes_are_unchanged():
+    scene = scene_from_dict({"name": "x"})
+    assert not scene.camera.animated and not scene.sun.animated
+    from oceanrender.scene.motion import camera_motion, sun_motion
+
+    assert camera_motion(scene) is None and sun_motion(scene) is None
+
+
+def test_solar_clock_scene_takes_its_still_sun_from_the_clock(tmp_path):
+    from oceanrender.scene.motion import solar_position_NOAA, sun_motion, utc
+
+    scene = load_scene(write(tmp_path, CLOCK.format(start="2024-06-21T19:30:00+02:00", scale=900.0)))
+    expected = solar_position_NOAA(utc(2024, 6, 21, 17, 30), 43.3, 5.37)
+    # The same NOAA equations at the same instant [deg]: 1e-9° is round-off only.
+    assert scene.sun.elevation == pytest.approx(expected.apparent_elevation, abs=1e-9)
+    assert scene.sun.azimuth == pytest.approx(expected.azimuth, abs=1e-9)
+    later = solar_position_NOAA(utc(2024, 6, 21, 17, 45), 43.3, 5.37)  # t = 1 s is 15 min later
+    assert sun_motion(scene).at(1.0).elevation == pytest.approx(later.apparent_elevation, abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (CAMERA_KEYS.split("[[camera.keys]]\ntime = 2.0")[0], "[camera] keys: [[camera.keys]] needs at least 2 keyframes, got 1"),
+        (CAMERA_KEYS.replace("time = 2.0", "time = 0.0"), "[camera] keys: key times must strictly increase, but key 2 at time = 0 s"),
+        (CAMERA_KEYS.replace("fov = 50", "fov = 180"), "[camera.keys[1]] fov: Input should be less than 180"),
+        (CAMERA_KEYS.replace("target = [-20, 60, 0]", "target = [10, 5, 8]"), "[camera] keys[1]: camera key at time = 2 s: target must differ from position"),
+        (CAMERA_KEYS.replace("position = [10, 5, 8]\n", ""), "[camera.keys[1]] position: required key is missing"),
+        ("[camera]\nposition = [1, 2, 3]\n" + CAMERA_KEYS, "camera: position = [1, 2, 3] contradicts the motion"),
+        ("[camera]\ninterpolation = 'linear'\n" + CAMERA_KEYS, "[camera] interpolation: Input should be 'monotone cubic' or 'Catmull-Rom'"),
+        (SUN_KEYS.replace("elevation = 20", "elevation = -3"), "[sun.keys[1]] elevation: Input should be greater than 0"),
+        (SUN_KEYS.replace("time = 2.0", "time = -1.0"), "[sun] keys: key times must strictly increase"),
+        ("[sun]\nazimuth = 10\n" + SUN_KEYS, "sun: azimuth = 10 contradicts the motion"),
+        (SUN_KEYS + CLOCK.format(start="2024-06-21T12:00:00Z", scale=1.0), "sun: give either [[sun.keys]] or [sun.clock], not both"),
+        (CLOCK.format(start="2024-06-21T19:30:00", scale=1.0), "[sun.clock] start: Input should have timezone info"),
+        (CLOCK.format(start="'noon'", scale=1.0), "[sun.clock] start: Input should be a valid datetime"),
+        (CLOCK.format(start="2024-06-21T23:00:00+02:00", scale=1.0), "sun: [sun.clock]: the sun is below the horizon at start"),
+        # 21:15 local, 1 h per second: apparent elevation +0.09° at frame 2 (21:20), -0.84° at frame 3 (21:22:30).
+        ("[output]\nframes = [0, 48]\n" + CLOCK.format(start="2024-06-21T21:15:00+02:00", scale=3600.0),
+         "sun: [sun.clock]: the sun is below the horizon at frame 3 (t = 0.125 s): elevation -0.84 deg"),
+        # Catmull-Rom overshoots below the horizon before the low key at t = 1 s (monotone cubic does not).
+        ("[output]\nframes = [0, 48]\n[sun]\ninterpolation = 'Catmull-Rom'\n" + DIPPING_SUN_KEYS,
+         "sun: [[sun.keys]]: the sun is below the horizon at frame 14 (t = 0.583333 s)"),
+    ],
+)
+def test_animation_errors_are_one_line_naming_the_key(tmp_path, text, expected):
+    path = write(tmp_path, text)
+    with pytest.raises(SceneError) as info:
+        load_scene(path)
+    message = str(info.value)
+    assert message.startswith(str(path)) and "\n" not in message, message
+    assert expected in message, message
+
+
+def test_monotone_sun_keyed_above_the_horizon_stays_above_it(tmp_path):
+    # The keys that Catmull-Rom takes below the horizon (see above) are valid with the default.
+    scene = load_scene(write(tmp_path, "[output]\nframes = [0, 48]\n" + DIPPING_SUN_KEYS))
+    assert scene.sun.interpolation == "monotone cubic"
