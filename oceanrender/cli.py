@@ -302,7 +302,7 @@ def cmd_info(args: argparse.Namespace) -> int:
     differ = [check.name for check in checks if lock_path and not check.matches]
     if lock_path:
         print(f"{len(checks) - len(differ)} of {len(checks)} {'locked' if args.all else 'core'} packages match the lock"
-              + (f"; rebuild .venv from it: OCEANRENDER_FRESH_VENV=1 make setup" if differ else ""))
+              + ("; rebuild .venv from it: OCEANRENDER_FRESH_VENV=1 make setup" if differ else ""))
     llvm = find_llvm_library()
     print(f"libLLVM for drjit: {llvm or 'none found (apt-get install libllvm19)'}")
     for variant in SPECTRAL_VARIANTS:

@@ -15,12 +15,12 @@ from typing import Callable
 import numpy as np
 
 from . import __version__
-from .scene import Scene
-from .surface.bodies import scene_water_body, sun_lobe_alpha, surface_roughness
-from .surface.frame import FrameGeometry
 from .io.frames import frame_is_complete, write_exr, write_png
 from .optics.scene_water import water_optics
 from .render.renderer import WaterRenderer, adapting_white_XYZ
+from .scene import Scene
+from .surface.bodies import scene_water_body, sun_lobe_alpha, surface_roughness
+from .surface.frame import FrameGeometry
 from .vision.brightness import adaptation_luminance_log_average
 from .vision.display import encode_sRGB_8bit
 from .vision.model import VisionModel
@@ -189,8 +189,8 @@ class Sequence:
         return self.body.frame(self.time_of(frame))
 
     def metadata(self, frame: int, repaired: int, adaptation: float) -> dict[str, object]:
-        import mitsuba  # noqa: PLC0415
         import colour  # noqa: PLC0415
+        import mitsuba  # noqa: PLC0415
 
         return {
             "scene": self.scene.name,

@@ -1,6 +1,5 @@
 """The sequence runner: per-frame updates, resume, and the CLI end to end."""
 
-import os
 import signal
 import subprocess
 import sys
@@ -9,13 +8,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
 from oceanrender.cli import main
-from oceanrender.scene import scene_from_dict
 from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import Sequence, frame_paths, render_sequence
 from oceanrender.render.renderer import WaterRenderer
+from oceanrender.scene import scene_from_dict
+from tests.tolerances import ROUNDOFF32
 
 pytestmark = pytest.mark.render
 
@@ -171,8 +170,8 @@ def test_cli_geometry_export(tmp_path, capsys):
 
 
 def test_composition_builds_the_medium():
-    from oceanrender.optics.water import MediumOptics
     from oceanrender.optics.scene_water import water_composition, water_optics
+    from oceanrender.optics.water import MediumOptics
     from oceanrender.render.scene import water_medium
 
     pure = tiny_scene()

@@ -3,12 +3,12 @@ the sun moves without recompiling the render kernel."""
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
-from oceanrender.scene import scene_from_dict
-from oceanrender.surface.open_sea import WaterBody
-from oceanrender.scene.motion import camera_motion
 from oceanrender.render.scene import sun_direction
+from oceanrender.scene import scene_from_dict
+from oceanrender.scene.motion import camera_motion
+from oceanrender.surface.open_sea import WaterBody
+from tests.tolerances import ROUNDOFF
 
 FPS = 24.0
 #: float32 vertices and Mitsuba parameters: a cast of float64 values that differ in their last

@@ -12,10 +12,8 @@ Conventions: arrays (ny, nx), rows south → north, columns west → east; cell
 from __future__ import annotations
 
 import numpy as np
-from numpy.typing import NDArray
 
 from .boundaries import Boundaries, IncidentWave, Transmissive, Wall
-from ..scene.arrays import coastal_cell_centres
 
 _SIDE_NORMAL_IN = {"north": -np.pi / 2, "south": np.pi / 2, "east": np.pi, "west": 0.0}
 

@@ -27,11 +27,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..waves.cascades import cascade_patch_sizes
-from ..surface.radial_mesh import RadialGrid, radial_body_faces
-from ..waves.sea import lod_weight
 from ..io.frames import atomic_path
 from ..io.ply import write_ply
+from ..surface.radial_mesh import RadialGrid, radial_body_faces
+from ..waves.cascades import cascade_patch_sizes
+from ..waves.sea import lod_weight
 
 
 def camera_mesh_top_faces(rings: int, segments: int) -> np.ndarray:

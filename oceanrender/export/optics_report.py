@@ -7,8 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..optics.report import SceneOptics
 from ..io.frames import atomic_path
+from ..optics.report import SceneOptics
 
 
 def _finite_or_none(values) -> list:

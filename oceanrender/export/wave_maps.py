@@ -64,10 +64,10 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..waves.fft_ocean import FFTOcean, OceanFields
-from ..surface.patch_mesh import water_body_faces, water_body_vertices
 from ..io.frames import atomic_path, read_exr, write_exr
 from ..io.ply import write_ply
+from ..surface.patch_mesh import water_body_faces, water_body_vertices
+from ..waves.fft_ocean import FFTOcean, OceanFields
 
 __all__ = [
     "MAP_FILES",

@@ -190,7 +190,7 @@ def render_distributed(scene: Scene, out_dir: str | Path, variant: str, client, 
     """
     from dask.distributed import as_completed  # noqa: PLC0415
 
-    from ..pipeline import SequenceReport, frames_to_render, frame_paths, simulate_coastal, write_frame  # noqa: PLC0415
+    from ..pipeline import SequenceReport, frame_paths, frames_to_render, simulate_coastal, write_frame  # noqa: PLC0415
 
     size = tuple(resolution or scene.output.resolution)
     spp = int(spp or scene.output.spp)

@@ -22,11 +22,11 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from ..optics.seafloor import linear_reflectance
-from ..scene import Scene
 from ..optics.fourflux import MU_D, MU_U
 from ..optics.report import REPORT_WAVELENGTHS
+from ..optics.seafloor import linear_reflectance
 from ..render.scene import sun_direction
+from ..scene import Scene
 from .luts import (
     Axis,
     Lut,
@@ -194,8 +194,8 @@ def scene_iops(scene: Scene, wavelengths: NDArray) -> tuple[NDArray, NDArray, ND
     or pure sea water from the table with b_b = b/2 (pure water's volume
     scattering function is symmetric about 90°, Morel 1974).
     """
-    from ..optics.water import pure_seawater_iops  # noqa: PLC0415
     from ..optics.scene_water import water_composition  # noqa: PLC0415
+    from ..optics.water import pure_seawater_iops  # noqa: PLC0415
 
     if scene.water.jerlov_type is not None:
         from ..optics.jerlov_types import iops_WilliamsonHollins2022  # noqa: PLC0415
@@ -290,8 +290,8 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
     -------
     LutSet
     """
-    from ..waves.sea import directional_spectrum  # noqa: PLC0415
     from ..pipeline import vision_for_scene  # noqa: PLC0415
+    from ..waves.sea import directional_spectrum  # noqa: PLC0415
 
     if list(light.wavelengths) != list(settings.wavelengths):
         raise ValueError("light was measured on another wavelength grid than the settings'")

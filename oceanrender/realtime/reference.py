@@ -17,9 +17,9 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from ..pipeline import Sequence, adaptation_luminance, vision_for_scene
 from ..scene import Scene
 from ..surface.open_sea import FrameGeometry
-from ..pipeline import Sequence, adaptation_luminance, vision_for_scene
 from ..vision.brightness import adaptation_luminance_log_average
 from .bake import LutSet
 from .compare import ErrorStats, delta_E_2000, error_stats

@@ -13,10 +13,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..scene import arrays
 from ..coastal.simulation import read_frame_fields
+from ..scene import arrays
 from .coastal_mesh import terrain_mesh, water_body_faces, water_body_vertices
 from .frame import FrameGeometry, Terrain
+
 
 class CoastalBody:
     """Frames of the coastal water body, read from a simulation store (see :mod:`.simulation`)."""

@@ -21,12 +21,11 @@ from numpy.typing import NDArray
 from ..scene import Scene
 from ..waves.fft_ocean import OceanFields, OceanGrid
 from ..waves.foam import foam_step
+from ..waves.roughness import unresolved_slope_variance
+from ..waves.sea import SeaSurface, SurfacePoints
 from .frame import FrameGeometry, Terrain
 from .patch_mesh import water_body_faces, water_body_vertices
 from .radial_mesh import RadialGrid, radial_body_faces, radial_body_vertices
-from ..waves.roughness import unresolved_slope_variance
-from ..waves.sea import SeaSurface, SurfacePoints
-
 
 #: Most history steps of the foam accumulation per frame [-].
 FOAM_STEPS = 4

@@ -4,7 +4,6 @@ import math
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal.analytic import (
     G,
@@ -16,6 +15,7 @@ from oceanrender.coastal.analytic import (
     stoker_middle_state,
     wall_reflection,
 )
+from tests.tolerances import ROUNDOFF
 
 
 def _integral(f, x):

@@ -5,18 +5,18 @@ import math
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal.analytic import simple_wave
 from oceanrender.coastal.boundaries import (
     SIDES,
-    BoundaryPlan,
     Boundaries,
+    BoundaryPlan,
     IncidentWave,
     Transmissive,
     Wall,
 )
 from oceanrender.coastal.swe import G, ShallowWaterSolver, SolverParams, State, lake_at_rest
+from tests.tolerances import ROUNDOFF
 
 ROWS = 3
 DEPTH = 1.0

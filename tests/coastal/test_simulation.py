@@ -5,8 +5,8 @@ import pytest
 
 from oceanrender.cli import main
 from oceanrender.coastal.simulation import read_frame_fields, run_simulation
-from oceanrender.scene import scene_from_dict
 from oceanrender.io.frames import read_exr
+from oceanrender.scene import scene_from_dict
 
 TINY_COASTAL = {"cells": [24, 16], "size": [12.0, 8.0], "origin": [-6.0, -2.0], "slope": 0.2, "offshore_depth": 0.8,
                 "wave_height": 0.1, "wave_period": 2.0, "order": 1, "cfl": 0.8, "spinup": 1.0,

@@ -8,7 +8,6 @@ import math
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal import swe
 from oceanrender.coastal.analytic import (
@@ -29,6 +28,7 @@ from oceanrender.coastal.swe import (
     State,
     lake_at_rest,
 )
+from tests.tolerances import ROUNDOFF
 
 #: Relative volume change allowed for closed basins (round-off of the update sums).
 MASS_RTOL = ROUNDOFF

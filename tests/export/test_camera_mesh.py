@@ -4,11 +4,11 @@ import json
 
 import numpy as np
 import plyfile
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.cli import main
-from oceanrender.scene import scene_from_dict
 from oceanrender.export.camera_mesh import camera_mesh_table, export_camera_mesh
+from oceanrender.scene import scene_from_dict
+from tests.tolerances import ROUNDOFF
 
 SCENE = {"name": "cm", "mesh": {"kind": "radial", "inner_radius": 0.5, "outer_radius": 2000.0, "segments": 48},
          "ocean": {"resolution": 64, "patch_size": 200.0, "cascades": 3}}

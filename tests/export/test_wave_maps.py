@@ -7,10 +7,6 @@ from dataclasses import dataclass
 import numpy as np
 import pytest
 
-from oceanrender.waves.fft_ocean import FFTOcean, OceanGrid
-from oceanrender.surface.patch_mesh import water_body_faces, water_body_vertices
-from oceanrender.waves.wave_spectra import spectrum_Phillips2001
-from oceanrender.io.frames import read_exr
 from oceanrender.export.wave_maps import (
     MAP_FILES,
     export_frame_maps,
@@ -21,7 +17,11 @@ from oceanrender.export.wave_maps import (
     read_frame_maps,
     write_geometry_json,
 )
+from oceanrender.io.frames import read_exr
 from oceanrender.io.ply import read_ply
+from oceanrender.surface.patch_mesh import water_body_faces, water_body_vertices
+from oceanrender.waves.fft_ocean import FFTOcean, OceanGrid
+from oceanrender.waves.wave_spectra import spectrum_Phillips2001
 
 N, PATCH, TIME = 16, 40.0, 1.3
 

@@ -4,10 +4,10 @@ import importlib
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
-from oceanrender.surface.patch_mesh import water_body_faces
 from oceanrender.io.ply import read_ply, write_ply
+from oceanrender.surface.patch_mesh import water_body_faces
+from tests.tolerances import ROUNDOFF32
 
 
 def grid_mesh(rng, n=3):

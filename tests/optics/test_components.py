@@ -26,7 +26,6 @@ from oceanrender.optics.components import (
 )
 from oceanrender.optics.tables import SPECTRA_DIR, SpectralDataError, read_spectral_table
 from oceanrender.optics.water import pure_seawater_iops
-
 from tests.tolerances import QUADRATURE, ROUNDOFF
 
 REFERENCE = Path(__file__).resolve().parents[3] / "shared" / "reference-data" / "iop"

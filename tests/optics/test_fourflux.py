@@ -11,7 +11,6 @@ Published relations used (u = b_b/(a + b_b)):
 import numpy as np
 import pytest
 from scipy.optimize import brentq
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.optics.fourflux import MU_D, MU_U, four_flux
 from oceanrender.optics.fresnel import (
@@ -20,6 +19,7 @@ from oceanrender.optics.fresnel import (
     reflectance_Fresnel,
     refracted_cosine,
 )
+from tests.tolerances import ROUNDOFF
 
 #: Sun and sky: a clear-sky spectrum shape does not matter (the model is linear).
 SUN, SKY, ZENITH = 1.6, 0.35, 35.0

@@ -2,7 +2,6 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.optics.fresnel import (
     N_WATER,
@@ -15,6 +14,7 @@ from oceanrender.optics.fresnel import (
     refracted_cosine,
     transmittance_Fresnel,
 )
+from tests.tolerances import ROUNDOFF
 
 N = N_WATER
 

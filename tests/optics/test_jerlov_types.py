@@ -6,8 +6,6 @@ from importlib import resources
 import numpy as np
 import pytest
 
-from oceanrender.scene import scene_from_dict
-from oceanrender.scene.settings import SceneError
 from oceanrender.optics.fourflux import four_flux
 from oceanrender.optics.jerlov_types import (
     JERLOV_TYPES,
@@ -16,6 +14,8 @@ from oceanrender.optics.jerlov_types import (
     jerlov_type_optics,
 )
 from oceanrender.optics.tables import SpectralDataError
+from oceanrender.scene import scene_from_dict
+from oceanrender.scene.settings import SceneError
 
 WL = np.array([450.0, 500.0, 550.0, 600.0])
 

@@ -2,7 +2,6 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.optics.mie import (
     JungePSD,
@@ -11,6 +10,7 @@ from oceanrender.optics.mie import (
     rayleigh_scattering_efficiency,
     sphere_efficiencies,
 )
+from tests.tolerances import ROUNDOFF
 
 # Du (2004) Appl. Opt. 43:1951, Table 1 (Wiscombe's 1979 test cases): x, m = n + ik, Qext, Qsca.
 DU2004_TABLE1 = [

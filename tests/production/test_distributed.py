@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 
 from oceanrender.cli import main
-from oceanrender.scene import scene_from_dict
 from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import frame_paths, render_sequence
 from oceanrender.production.distributed import render_distributed, sequence_key, worker_threads
+from oceanrender.scene import scene_from_dict
 
 pytestmark = pytest.mark.render
 

@@ -4,13 +4,13 @@ import json
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
 from oceanrender.cli import main
 from oceanrender.io.frames import read_exr
 from oceanrender.io.ply import read_ply
 from oceanrender.realtime.bake import LUT_NAMES
 from oceanrender.realtime.files import read_lut_set
+from tests.tolerances import ROUNDOFF32
 
 from . import TINY_COASTAL
 

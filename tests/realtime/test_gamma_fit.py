@@ -2,11 +2,11 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.realtime.compare import delta_E_2000, display_to_Lab, error_stats
 from oceanrender.realtime.gamma_fit import FitView, fit_gamma, mean_delta_E
 from oceanrender.realtime.model import fresnel_mix
+from tests.tolerances import ROUNDOFF
 
 
 def synthetic_views(rng, gamma, count=3, pixels=400, noise=0.0):

@@ -2,11 +2,11 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.coastal.simulation import run_simulation
 from oceanrender.realtime.gbuffer import KIND_WATER, camera_for_scene
 from oceanrender.realtime.reference import ReferenceRenderer
+from tests.tolerances import ROUNDOFF
 
 from . import synthetic_scene
 

@@ -4,16 +4,16 @@ import math
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
-from oceanrender.optics.seafloor import linear_reflectance
 from oceanrender.optics.fresnel import N_AIR, diffuse_reflectance_Fresnel, reflectance_Fresnel
 from oceanrender.optics.report import REPORT_WAVELENGTHS
+from oceanrender.optics.seafloor import linear_reflectance
 from oceanrender.pipeline import vision_for_scene
 from oceanrender.realtime.bake import BakeSettings, water_column
 from oceanrender.realtime.luts import (
     K_M,
     Axis,
+    Lut,
     VisionState,
     WaterColumn,
     albedo_display_rgb,
@@ -27,7 +27,7 @@ from oceanrender.realtime.luts import (
     spectra_to_XYZ,
 )
 from oceanrender.realtime.model import sample_envmap
-from oceanrender.realtime.luts import Lut
+from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 from . import SMALL, synthetic_light, synthetic_scene
 

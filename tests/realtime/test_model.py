@@ -4,7 +4,6 @@ import math
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.optics.fresnel import N_AIR, reflectance_Fresnel
 from oceanrender.realtime.bake import BakeSettings
@@ -18,6 +17,7 @@ from oceanrender.realtime.model import (
     sample_lut_2d,
     sun_glint,
 )
+from tests.tolerances import ROUNDOFF
 
 from . import SMALL, synthetic_light, synthetic_lut_set
 

@@ -10,21 +10,21 @@ the largest error (a single caustic firefly can otherwise decide it).
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
-from oceanrender.scene import scene_from_dict
-from oceanrender.surface.frame import FrameGeometry
 from oceanrender.render.denoise import (
     LINEAR_SRGB_TO_XYZ,
     XYZ_TO_LINEAR_SRGB,
     FeatureRenderer,
+    XYZ_to_linear_sRGB,
     denoise,
     denoise_XYZ,
     equal_energy_white_rgb,
     linear_sRGB_to_XYZ,
     split_features,
-    XYZ_to_linear_sRGB,
 )
+from oceanrender.scene import scene_from_dict
+from oceanrender.surface.frame import FrameGeometry
+from tests.tolerances import ROUNDOFF
 
 
 def rel_mse(image, reference, eps=1e-2, trim=1e-3):

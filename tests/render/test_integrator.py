@@ -14,10 +14,10 @@ compile a new kernel, ~10 s for the split integrator on two CPU cores.
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
 from oceanrender.render.integrator import SPLIT_INTEGRATOR, register, split_integrator
 from oceanrender.render.scene import look_at_transform, xyz_film
+from tests.tolerances import ROUNDOFF32
 
 pytestmark = pytest.mark.render
 

@@ -5,12 +5,12 @@ import math
 import colour
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
-from oceanrender.scene import scene_from_dict
 from oceanrender.render.renderer import K_M, adapting_white_XYZ, repair_non_finite
 from oceanrender.render.scene import CIE1931, perspective_sensor, sun_direction, sunsky_emitter, xyz_film
+from oceanrender.scene import scene_from_dict
 from oceanrender.vision.model import VisionModel
+from tests.tolerances import ROUNDOFF
 
 pytestmark = pytest.mark.render
 

@@ -10,12 +10,12 @@ within the sun's 0.5° disc), so the closed form is the reference.
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
 from oceanrender.optics.fresnel import refracted_cosine, transmittance_Fresnel
 from oceanrender.render.integrator import register, split_integrator
 from oceanrender.render.scene import look_at_transform, xyz_film
 from oceanrender.render.underwater import cox_munk_mean_square_slope
+from tests.tolerances import ROUNDOFF32
 
 N_WATER = 1.333
 #: Unit vector towards the sun, 40° above the horizon.

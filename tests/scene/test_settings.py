@@ -3,9 +3,9 @@
 from pathlib import Path
 
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.scene import SceneError, load_scene, scene_from_dict, with_overrides
+from tests.tolerances import ROUNDOFF
 
 SCENES = Path(__file__).resolve().parents[2] / "scenes"
 

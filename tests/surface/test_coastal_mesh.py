@@ -2,7 +2,6 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 from oceanrender.surface.coastal_mesh import (
     DRY_DROP,
@@ -11,7 +10,9 @@ from oceanrender.surface.coastal_mesh import (
     water_body_vertices,
     water_surface_heights,
 )
-from oceanrender.surface.patch_mesh import heightfield_body_faces, signed_volume, water_body_faces as patch_faces
+from oceanrender.surface.patch_mesh import heightfield_body_faces, signed_volume
+from oceanrender.surface.patch_mesh import water_body_faces as patch_faces
+from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 SPACING, ORIGIN = (0.5, 0.25), (-3.0, 10.0)
 

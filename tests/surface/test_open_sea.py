@@ -2,12 +2,12 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 from oceanrender.scene import scene_from_dict
 from oceanrender.surface.open_sea import WaterBody
 from oceanrender.surface.patch_mesh import signed_volume
 from oceanrender.waves.sea import lod_weight
+from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 
 def scene(**sections):

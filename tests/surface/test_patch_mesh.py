@@ -4,9 +4,7 @@ from collections import Counter
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
-from oceanrender.waves.fft_ocean import FFTOcean, OceanFields, OceanGrid
 from oceanrender.surface.patch_mesh import (
     signed_volume,
     water_body_face_count,
@@ -14,6 +12,8 @@ from oceanrender.surface.patch_mesh import (
     water_body_vertex_count,
     water_body_vertices,
 )
+from oceanrender.waves.fft_ocean import FFTOcean, OceanFields, OceanGrid
+from tests.tolerances import ROUNDOFF32
 
 #: Relative tolerance of volumes computed from float32 positions.
 VOLUME_RTOL = 1e-5

@@ -4,7 +4,6 @@ import math
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.vision.brightness import (
     BRIGHTNESS_METHODS,
@@ -14,6 +13,7 @@ from oceanrender.vision.brightness import (
     scale_factor_Ward1994,
     threshold_photopic_Ferwerda1996,
 )
+from tests.tolerances import ROUNDOFF
 
 #: Closed forms (powers, log10/10^x) evaluated two ways: float64 round-off, relative.
 RTOL = ROUNDOFF

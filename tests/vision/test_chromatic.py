@@ -3,7 +3,6 @@
 import colour
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.vision.chromatic import (
     CCS_WHITE_D65,
@@ -11,6 +10,7 @@ from oceanrender.vision.chromatic import (
     XYZ_white_D65,
     chromatic_adaptation_to_D65,
 )
+from tests.tolerances import ROUNDOFF
 
 #: Adaptation = 3×3 cone matrix, its inverse (LAPACK) and a diagonal scaling: relative,
 #: well above their float64 round-off (cond ≲ 10), far below any visible difference.

@@ -3,7 +3,6 @@
 import colour
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.vision.chromatic import XYZ_white_D65
 from oceanrender.vision.display import (
@@ -12,6 +11,7 @@ from oceanrender.vision.display import (
     encode_sRGB_8bit,
     sRGB_linear_to_XYZ,
 )
+from tests.tolerances import ROUNDOFF
 
 #: The precision of values published to 4 decimals (IEC 61966-2-1) [scale 1].
 TOL = 1e-4

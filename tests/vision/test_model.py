@@ -5,7 +5,6 @@ import dataclasses
 import colour
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF32
 
 from oceanrender.vision import (
     BRIGHTNESS_METHODS,
@@ -15,6 +14,7 @@ from oceanrender.vision import (
     XYZ_white_D65,
     brightness_scale_factor,
 )
+from tests.tolerances import ROUNDOFF32
 
 RTOL = ROUNDOFF32  # float32 output
 

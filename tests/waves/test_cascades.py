@@ -4,7 +4,6 @@ from functools import partial
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.waves.cascades import (
     PATCH_SIZE_RATIO,
@@ -16,6 +15,7 @@ from oceanrender.waves.cascades import (
 )
 from oceanrender.waves.fft_ocean import OceanGrid, time_amplitudes
 from oceanrender.waves.wave_spectra import spectrum_Phillips2001
+from tests.tolerances import ROUNDOFF
 
 SPECTRUM = partial(spectrum_Phillips2001, wind_speed=8.0, wind_direction=0.3)
 

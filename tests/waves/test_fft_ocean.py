@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 import scipy.fft
 import scipy.stats
-from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 from oceanrender.waves.fft_ocean import (
     ENGINES,
@@ -29,6 +28,7 @@ from oceanrender.waves.wave_spectra import (
     significant_wave_height_Phillips2001,
     spectrum_Phillips2001,
 )
+from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 #: Phases ω t of the unreduced synthesis at t + 3T reach ~400 rad and carry ~ω t ε of
 #: absolute error, ~10× that of phases reduced to one cycle [relative to the field's scale].

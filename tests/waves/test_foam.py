@@ -2,10 +2,10 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.waves.fft_ocean import FFTOcean, OceanGrid
 from oceanrender.waves.foam import FOAM_DECAY_TIME_SEAWATER, FoamAccumulator, foam_production_rate, foam_step
+from tests.tolerances import ROUNDOFF
 
 
 def test_no_foam_without_folding(rng):

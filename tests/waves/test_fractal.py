@@ -2,7 +2,6 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.waves import fractal
 from oceanrender.waves.fft_ocean import FFTOcean, OceanGrid
@@ -14,6 +13,7 @@ from oceanrender.waves.fractal import (
     structure_function,
     upsample_periodic,
 )
+from tests.tolerances import ROUNDOFF
 
 
 def mean_structure_function(order, spacing, hurst, sigma, seeds):

@@ -4,7 +4,6 @@ from functools import partial
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
 from oceanrender.waves.fft_ocean import OceanFields
 from oceanrender.waves.gerstner import (
@@ -17,6 +16,7 @@ from oceanrender.waves.gerstner import (
     wave_components_variance,
 )
 from oceanrender.waves.wave_spectra import GRAVITY, dispersion_relation, spectrum_Phillips2001
+from tests.tolerances import ROUNDOFF
 
 FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "jacobian", "normals")
 

@@ -2,10 +2,9 @@
 
 import numpy as np
 import pytest
-from tests.tolerances import ROUNDOFF
 
-from oceanrender.waves.fft_ocean import FFTOcean, OceanFields, OceanGrid
 from oceanrender.surface.patch_mesh import water_body_vertices
+from oceanrender.waves.fft_ocean import FFTOcean, OceanFields, OceanGrid
 from oceanrender.waves.query import (
     SurfaceSample,
     periodic_sampler,
@@ -14,6 +13,7 @@ from oceanrender.waves.query import (
     sum_samplers,
     surface_normals,
 )
+from tests.tolerances import ROUNDOFF
 
 #: Tolerance on the displaced position of a root, asked of the query [m].
 POSITION_ATOL = 1e-6

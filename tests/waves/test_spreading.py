@@ -6,9 +6,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 from scipy.special import gamma as gamma_function
-from tests.tolerances import ROUNDOFF
 
-from oceanrender.waves.wave_spectra import GRAVITY
 from oceanrender.waves.spreading import (
     SPREADING,
     directional_spreading,
@@ -21,6 +19,8 @@ from oceanrender.waves.spreading import (
     spreading_width_DonelanBanner1985,
     wrap_angle,
 )
+from oceanrender.waves.wave_spectra import GRAVITY
+from tests.tolerances import ROUNDOFF
 
 #: Tolerance of ∫ D dθ = 1.
 NORMALISATION_TOL = 1e-6

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 from scipy.integrate import quad
-from tests.tolerances import QUADRATURE, ROUNDOFF
 
+from oceanrender.waves.spreading import SPREADING
 from oceanrender.waves.wave_spectra import (
     FREQUENCY_SPECTRA,
     GRAVITY,
@@ -36,7 +36,7 @@ from oceanrender.waves.wave_spectra import (
     wave_spectrum,
     wavenumber_from_frequency,
 )
-from oceanrender.waves.spreading import SPREADING
+from tests.tolerances import QUADRATURE, ROUNDOFF
 
 #: Relative tolerance of numerical quadrature against closed forms.
 QUADRATURE_RTOL = 1e-3
