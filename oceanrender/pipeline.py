@@ -207,6 +207,7 @@ class Sequence:
             "chromatic_transform": self.vision.chromatic_transform,
             "display_luminance_cd_m2": self.vision.display_max_luminance,
             "surface_roughness_beckmann_alpha": self.roughness,
+            "surface_roughness_per_vertex": self._roughness_label(),
             "sun_lobe_beckmann_alpha": self.sun_lobe_alpha if self.scene.render.sun_sampling else 0.0,
             "in_water_clamp_W_m2_sr_nm": self.in_water_clamp,
             "camera_position_m": " ".join(f"{v:.6g}" for v in self.pose.position),
@@ -220,6 +221,14 @@ class Sequence:
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
+
+    def _roughness_label(self) -> str:
+        """How the surface BSDF's α is set: one value, or per vertex with its range."""
+        if not getattr(self.body, "per_vertex_roughness", False):
+            return "no: one alpha for the whole surface"
+        alpha = self.body.vertex_roughness
+        return (f"yes: alpha = sqrt(unresolved slope variance), {float(alpha.min()):.4g} (finest vertices) to "
+                f"{float(alpha.max()):.4g} (all slopes unresolved)")
 
     def _sun_motion_label(self) -> str:
         if self.scene.sun.clock is not None:

@@ -17,6 +17,7 @@ from ..scene.motion import CameraPose, SunAngles
 from ..surface.frame import FrameGeometry, Terrain
 from .scene import (
     FILM_RANGE_NM,
+    ROUGHNESS_ATTRIBUTE,
     apply_camera,
     apply_sun,
     irregular_spectrum,
@@ -88,6 +89,8 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: d
     mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
     if geometry.foam is not None:
         mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(geometry.foam))
+    if geometry.roughness is not None:
+        mesh.add_attribute(ROUGHNESS_ATTRIBUTE, 1, mitsuba_floats(geometry.roughness))
     params = mi.traverse(mesh)
     params["vertex_positions"] = mitsuba_floats(geometry.positions)
     params["vertex_normals"] = mitsuba_floats(geometry.normals)
@@ -141,11 +144,13 @@ def terrain_shapes(terrain: Terrain | None) -> dict:
 
 
 def update_water_parameters(params, geometry: FrameGeometry) -> None:
-    """Write a frame's vertex positions [m], normals and foam into a loaded scene's water mesh (``mi.traverse``)."""
+    """Write a frame's vertex positions [m], normals, foam and roughness into a loaded scene's water mesh."""
     params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
     params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
     if geometry.foam is not None:
         params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
+    if geometry.roughness is not None:
+        params[f"{WATER_ID}.{ROUGHNESS_ATTRIBUTE}"] = mitsuba_floats(geometry.roughness)
     params.update()
 
 
@@ -186,7 +191,8 @@ class WaterRenderer:
               in_water_clamp: float = 0.0) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
-        ``roughness`` is the Beckmann α of the water surface [-];
+        ``roughness`` is the Beckmann α of the water surface [-] (unused
+        when ``geometry.roughness`` gives one per vertex);
         ``sun_lobe_alpha`` the total rms slope of the surface [-], which turns
         on the in-water sun sampling of the ``split`` integrator (when the
         scene's ``render.sun_sampling`` allows it).
@@ -194,7 +200,7 @@ class WaterRenderer:
         import mitsuba as mi  # noqa: PLC0415
 
         width, height = resolution or settings.output.resolution
-        bsdf = water_surface_bsdf(settings.water.ior, roughness)
+        bsdf = water_surface_bsdf(settings.water.ior, roughness, per_vertex=geometry.roughness is not None)
         if geometry.foam is not None:
             bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
         mesh = water_mesh(faces, geometry, bsdf, water_medium(iops))

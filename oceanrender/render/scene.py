@@ -177,13 +177,19 @@ def water_medium(optics: WaterIOPs | MediumOptics) -> dict:
 SMOOTH_ALPHA = 1e-3
 
 
-def water_surface_bsdf(ior: float, alpha: float) -> dict:
+#: Name of the per-vertex Beckmann α attribute of the water mesh.
+ROUGHNESS_ATTRIBUTE = "vertex_roughness"
+
+
+def water_surface_bsdf(ior: float, alpha: float, per_vertex: bool = False) -> dict:
     """Air–water interface: smooth ``dielectric`` or ``roughdielectric`` (Beckmann α).
 
     Parameters
     ----------
-    ior : float     Refractive index of water relative to air [-].
-    alpha : float   Beckmann roughness of the unresolved slopes [-].
+    ior : float         Refractive index of water relative to air [-].
+    alpha : float       Beckmann roughness of the unresolved slopes [-].
+    per_vertex : bool   Read α per vertex from the mesh attribute :data:`ROUGHNESS_ATTRIBUTE`
+                        (a ``mesh_attribute`` texture, interpolated over each triangle) instead.
 
     Notes
     -----
@@ -191,6 +197,10 @@ def water_surface_bsdf(ior: float, alpha: float) -> dict:
     from under water (a delta interface blocks it), which is what makes the
     sun's light scattered inside the water converge at low spp.
     """
+    if per_vertex:
+        return {"type": "roughdielectric", "distribution": "beckmann",
+                "alpha": {"type": "mesh_attribute", "name": ROUGHNESS_ATTRIBUTE},
+                "int_ior": float(ior), "ext_ior": 1.0}
     if alpha < SMOOTH_ALPHA:
         return {"type": "dielectric", "int_ior": float(ior), "ext_ior": 1.0}
     return {"type": "roughdielectric", "distribution": "beckmann", "alpha": float(alpha),

@@ -26,11 +26,14 @@ class FrameGeometry:
     ----------
     positions, normals : (V, 3) float32   Vertex positions [m] and unit normals.
     foam : (V,) float32 or None            Foam coverage per vertex [-] (0 off the surface).
+    roughness : (V,) float32 or None       Beckmann α of the surface BSDF per vertex [-]: the slopes of
+                                           the waves the mesh does not carry there; None: one scene-wide α.
     """
 
     positions: NDArray[np.float32]
     normals: NDArray[np.float32]
     foam: NDArray[np.float32] | None
+    roughness: NDArray[np.float32] | None = None
 
 
 @dataclass(frozen=True)
@@ -71,7 +74,8 @@ class WaterSurface(Protocol):
         """The body at scene time t [s]."""
 
     def total_slope_variance(self, roughness: float) -> float:
-        """Mean-square slope of all its waves [-], given the unresolved Beckmann α ``roughness``."""
+        """Mean-square slope of all its waves [-], given the unresolved Beckmann α ``roughness``
+        (the scene-wide α; bodies with a per-vertex α already count it in the spectrum's total)."""
 
     def terrain(self) -> Terrain | None:
         """The terrain rendered inside the water, or None (open sea)."""

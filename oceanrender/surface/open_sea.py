@@ -8,7 +8,15 @@ of history before each frame, so every frame follows from (scene, t) alone.
 
 With a moving camera (``[[camera.keys]]``) the radial grid follows it: at
 time t its rest points are the grid translated to the camera's (x, y) at t;
-the triangles never change.
+the triangles never change. The radial body ends in a flat far ring out to
+:func:`~.radial_mesh.horizon_radius` of the camera's height at t, so the sea
+reaches the horizon.
+
+Roughness. With ``[water] surface_roughness = "auto"`` and the radial mesh of
+an FFT sea, every vertex carries its own Beckmann α (:attr:`FrameGeometry.roughness`):
+the slope variance of the waves its spacing does not resolve
+(:meth:`~oceanrender.waves.sea.SeaSurface.unresolved_slope_variance`), so
+resolved plus unresolved slopes add up to the spectrum's at every distance.
 """
 
 from __future__ import annotations
@@ -21,11 +29,10 @@ from numpy.typing import NDArray
 from ..scene import Scene
 from ..waves.fft_ocean import OceanFields, OceanGrid
 from ..waves.foam import foam_step
-from ..waves.roughness import unresolved_slope_variance
 from ..waves.sea import SeaSurface, SurfacePoints
 from .frame import FrameGeometry, Terrain
 from .patch_mesh import water_body_faces, water_body_vertices
-from .radial_mesh import RadialGrid, radial_body_faces, radial_body_vertices
+from .radial_mesh import RadialGrid, horizon_radius, radial_body_faces, radial_body_vertices
 
 #: Most history steps of the foam accumulation per frame [-].
 FOAM_STEPS = 4
@@ -46,7 +53,7 @@ class WaterBody:
             self.camera_path = camera_motion(scene)
             center = (scene.camera.position[0], scene.camera.position[1])
             self.radial = RadialGrid.square_cells(center, mesh.inner_radius, mesh.outer_radius, mesh.segments)
-            self.faces = radial_body_faces(self.radial.rings, self.radial.segments)
+            self.faces = radial_body_faces(self.radial.rings + 1, self.radial.segments)  # + the far ring
             self.rest_x, self.rest_y = self.radial.points.T
             self.spacing = self.radial.spacing
         else:
@@ -68,12 +75,38 @@ class WaterBody:
         return self.sea.finest_cell
 
     def total_slope_variance(self, roughness: float) -> float:
-        """Mean-square slope of all the sea's waves [-]: the spectrum's, from waves 10 patches long to 1 mm.
+        """Mean-square slope of all the sea's waves [-]: the spectrum's, from 60 km down to 1 mm long.
 
         (``roughness`` is the part already in that integral.)
         """
-        k_min = 2.0 * np.pi / (10.0 * self.scene.ocean.patch_size)
-        return unresolved_slope_variance(self.spectrum, k_min)
+        return self.sea.total_slope_variance
+
+    @property
+    def per_vertex_roughness(self) -> bool:
+        """True when every vertex carries its own α: radial mesh, FFT sea, ``surface_roughness = "auto"``."""
+        return (self.radial is not None and self.sea.cascades is not None
+                and self.scene.water.surface_roughness == "auto")
+
+    @property
+    def vertex_roughness(self) -> NDArray[np.float32]:
+        """Beckmann α per vertex [-]: √(unresolved slope variance) on the rings, √(total) beyond.
+
+        The far ring, the skirt and the bottom carry no waves: all the
+        spectrum's slopes are roughness there. Fixed for the body (the
+        spacing of a vertex never changes).
+        """
+        if not hasattr(self, "_vertex_roughness"):
+            top = np.sqrt(self.sea.unresolved_slope_variance(self.spacing))
+            alpha = np.full(self.vertex_count, np.sqrt(self.sea.total_slope_variance))
+            alpha[: top.size] = top
+            self._vertex_roughness = alpha.astype(np.float32)
+        return self._vertex_roughness
+
+    def camera_height(self, t: float) -> float:
+        """Height of the camera above the mean sea level at time t [s] [m]."""
+        if self.camera_path is not None:
+            return float(self.camera_path.at(t).position[2])
+        return float(self.scene.camera.position[2])
 
     def terrain(self) -> Terrain | None:
         """No terrain in the open sea."""
@@ -133,7 +166,9 @@ class WaterBody:
         depth = self.scene.water.depth
         surface = self.surface(t)
         if self.radial is not None:
-            positions, normals = radial_body_vertices(self.grid_at(t), surface.displacement, surface.normals, depth)
+            far = horizon_radius(self.camera_height(t), self.radial.outer_radius, self.radial.segments)
+            positions, normals = radial_body_vertices(self.grid_at(t), surface.displacement, surface.normals, depth,
+                                                      far_radius=far)
         else:
             d = surface.displacement
             fields = OceanFields(d[..., 2], d[..., 0], d[..., 1], np.zeros_like(d[..., 0]), np.zeros_like(d[..., 0]),
@@ -146,4 +181,5 @@ class WaterBody:
                 top = np.pad(top, ((0, 1), (0, 1)), mode="wrap")
             foam = np.zeros(len(positions), np.float32)
             foam[: top.size] = top.ravel()
-        return FrameGeometry(positions, normals, foam)
+        roughness = self.vertex_roughness if self.per_vertex_roughness else None
+        return FrameGeometry(positions, normals, foam, roughness)

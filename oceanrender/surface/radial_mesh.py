@@ -12,6 +12,17 @@ the waves sampled at their rest positions.
 The body is closed for Mitsuba's dielectric + medium: a top surface (centre
 vertex + rings), a skirt below the outer ring down to ``depth``, and a flat
 bottom fan. z up; lengths in m.
+
+The horizon. Seen from a height h, a flat sea that ends at radius R leaves a
+gap of atan(h/R) between its edge and the horizon (0° elevation), where the
+sky model is black below the horizon: from 30 m, an 8 km mesh leaves 0.21°,
+a dark line a pixel or two high. :func:`horizon_radius` puts one more, flat
+ring far enough out that the gap is :data:`HORIZON_GAP_DEG` (a fraction of a
+pixel at any usual resolution); the waves have faded into the surface
+roughness long before (:mod:`oceanrender.waves.lod`), so this ring only
+continues the sea's mean appearance. The Earth is flat here: the sky model
+(Hosek & Wilkie 2012) is defined above 0° elevation only, so the sea meets it
+there rather than at the geometric dip sqrt(2h/R_E) of a curved Earth.
 """
 
 from __future__ import annotations
@@ -87,6 +98,24 @@ class RadialGrid:
         return 1 + self.rings * self.segments
 
 
+#: Largest angle between the horizon and the far edge of the sea, seen from the camera [deg]
+#: (a 1280 px wide, 60° frame has 0.047° pixels).
+HORIZON_GAP_DEG = 0.005
+
+
+def horizon_radius(camera_height: float, outer_radius: float, segments: int) -> float:
+    """Radius of the flat far ring [m]: h / (tan(gap) cos(π/segments)), at least twice ``outer_radius``.
+
+    Parameters
+    ----------
+    camera_height : float   Height of the camera above the mean sea level [m] (≤ 0: under water).
+    outer_radius : float    Radius of the last wave-carrying ring [m].
+    segments : int          Vertices of the ring [-]: its edges' midpoints are cos(π/segments) nearer.
+    """
+    reach = max(camera_height, 0.0) / (np.tan(np.radians(HORIZON_GAP_DEG)) * np.cos(np.pi / segments))
+    return float(max(2.0 * outer_radius, reach))
+
+
 def radial_body_faces(rings: int, segments: int) -> NDArray[np.uint32]:
     """Triangles of the closed radial body, outward-facing (counter-clockwise seen from outside).
 
@@ -115,9 +144,12 @@ def radial_body_faces(rings: int, segments: int) -> NDArray[np.uint32]:
     return np.concatenate(faces).astype(np.uint32)
 
 
-def radial_body_vertices(grid: RadialGrid, displacement: NDArray, normals: NDArray,
-                         depth: float) -> tuple[NDArray[np.float32], NDArray[np.float32]]:
+def radial_body_vertices(grid: RadialGrid, displacement: NDArray, normals: NDArray, depth: float,
+                         far_radius: float | None = None) -> tuple[NDArray[np.float32], NDArray[np.float32]]:
     """Positions and normals of the closed body from the surface sampled at the rest points.
+
+    With ``far_radius`` [m] a flat ring at that radius (z = 0, normals +z)
+    follows the grid's rings: the faces are then those of ``grid.rings + 1`` rings.
 
     Parameters
     ----------
@@ -132,6 +164,12 @@ def radial_body_vertices(grid: RadialGrid, displacement: NDArray, normals: NDArr
     top = np.column_stack([grid.points + displacement[:, :2], displacement[:, 2]])
     if not depth > 0 or -depth >= top[:, 2].min():
         raise ValueError(f"depth must be > 0 and below the deepest trough ({-top[:, 2].min():.3f} m), got {depth}")
+    if far_radius is not None:
+        theta = 2.0 * np.pi * np.arange(grid.segments) / grid.segments
+        far = np.column_stack([far_radius * np.cos(theta) + grid.center[0], far_radius * np.sin(theta) + grid.center[1],
+                               np.zeros(grid.segments)])
+        top = np.vstack([top, far])
+        normals = np.vstack([normals, np.tile([0.0, 0.0, 1.0], (grid.segments, 1))])
     outer = top[-grid.segments:]
     skirt = np.column_stack([outer[:, :2], np.full(grid.segments, -depth)])
     bottom = np.array([[*outer[:, :2].mean(axis=0), -depth]])

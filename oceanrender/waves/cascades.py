@@ -60,6 +60,7 @@ __all__ = [
     "commensurability",
     "cascade_patch_sizes",
     "cascade_band_edges",
+    "cascade_band_edges_resolved",
     "annulus_fraction",
     "BandLimitedSpectrum",
     "SurfaceSample",
@@ -154,6 +155,57 @@ def cascade_band_edges(grids: Sequence[OceanGrid]) -> tuple[float, ...]:
         if not (edges[i + 1] > edges[i] and edges[i + 1] <= grid.nyquist_wavenumber and edges[i + 1] > grid.dk):
             raise ValueError(f"patch {i} (L = {grid.patch_size} m, N = {grid.resolution}) has an empty band "
                              f"[{edges[i]:.4g}, {edges[i + 1]:.4g}) rad/m: use more points or a smaller size ratio")
+    return tuple(edges)
+
+
+def cascade_band_edges_resolved(grids: Sequence[OceanGrid], points_per_wavelength: float) -> tuple[float, ...]:
+    """Band edges that end each patch's band where its grid still has ``points_per_wavelength`` [rad m⁻¹].
+
+    Parameters
+    ----------
+    grids : sequence of OceanGrid
+        The patches, largest first.
+    points_per_wavelength : float
+        p > 2: the top of band i is k_{i+1} = 2π / (p Δ_i), Δ_i the grid
+        spacing of patch i, so its shortest wave spans p grid points.
+
+    Returns
+    -------
+    tuple of float
+        n + 1 edges 0 = k_0 < k_1 < … < k_n.
+
+    Notes
+    -----
+    Unlike :func:`cascade_band_edges` (the geometric mean of one patch's
+    Nyquist wavenumber and the next one's fundamental), this keeps every band
+    p points per wavelength away from its own grid's limit, where bilinear
+    interpolation of the patch damps a mode's power by at most 1 − (2 +
+    cos(2π/p))²/9 (17 % at p = 6, against 67 % at the Nyquist wavenumber), and
+    lets the largest patch carry waves down to p of its cells: a 2.4 km patch
+    on 1024² points holds the peak of a 10 m/s sea, so the surface does not
+    repeat at the period of a smaller patch.
+
+    Raises
+    ------
+    ValueError
+        If the patches do not shrink, p ≤ 2, or a band holds no mode of its
+        patch's lattice. (A band that starts within a few fundamentals of its
+        patch samples its bottom coarsely: k_i/Δk_i = N/(p r) for patches of
+        ratio r on N points, 39 at N = 1024, p = 6, r = 4.39.)
+    """
+    if not points_per_wavelength > 2:
+        raise ValueError(f"points_per_wavelength must be > 2, got {points_per_wavelength!r}")
+    edges = [0.0]
+    for coarse, fine in zip(grids[:-1], grids[1:]):
+        if not fine.patch_size < coarse.patch_size:
+            raise ValueError("patches must be given largest first, each smaller than the one before")
+        edges.append(2.0 * np.pi / (points_per_wavelength * coarse.spacing))
+    edges.append(2.0 * np.pi / (points_per_wavelength * grids[-1].spacing))
+    for i, grid in enumerate(grids):
+        if not (edges[i + 1] > edges[i] and edges[i + 1] > grid.dk):
+            raise ValueError(f"patch {i} (L = {grid.patch_size} m, N = {grid.resolution}) has an empty band "
+                             f"[{edges[i]:.4g}, {edges[i + 1]:.4g}) rad/m: "
+                             "use more points or a smaller size ratio")
     return tuple(edges)
 
 

@@ -4,9 +4,10 @@ This is the model-chain layer of the geometry stage (pvlib's three layers):
 :func:`directional_spectrum` turns the settings into the spectrum object,
 :func:`build_sea` into a surface model (FFT cascades, sum of sines or Gerstner
 waves), and :class:`SeaSurface` samples it where the renderer's mesh has its
-vertices, fading out, per vertex, the waves that the local vertex spacing
-cannot carry (they would alias into noise; their slopes are accounted for by
-the surface roughness instead).
+vertices, filtering, per vertex, the waves that the local vertex spacing
+cannot carry by wavenumber (:mod:`.lod`: they would alias into noise), and
+gives per vertex the slope variance of what it removed, which the surface
+BSDF carries as roughness instead (:meth:`SeaSurface.unresolved_slope_variance`).
 """
 
 from __future__ import annotations
@@ -18,9 +19,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..scene import OceanSettings
-from .cascades import CascadeOcean, SurfaceSample, bilinear_corners, cascade_patch_sizes
+from .cascades import (BandLimitedSpectrum, CascadeOcean, bilinear_corners,
+                       cascade_band_edges_resolved, cascade_patch_sizes)
+from .fft_ocean import FFTOcean, OceanGrid
 from .fractal import estimate_fbm_parameters, fractal_detail
 from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from_spectrum
+from .lod import LEVEL_POINTS_PER_WAVELENGTH, CascadeLevels, GainCompensated
+from .roughness import unresolved_slope_variance
 from .wave_spectra import DirectionalSpectrum
 
 
@@ -43,14 +48,38 @@ def directional_spectrum(ocean: OceanSettings) -> DirectionalSpectrum:
     )
 
 
-def lod_weight(spacing: NDArray, cell: float) -> NDArray:
-    """Weight in [0, 1] of a wave band with grid cell ``cell`` [m] at vertex ``spacing`` [m].
+#: Shortest wave of the spectrum counted in its total slope variance [m] (gravity–capillary waves;
+#: shorter ones are damped by viscosity within a few periods, Phillips 1977 §3.3).
+SHORTEST_WAVELENGTH = 1e-3
 
-    1 where the vertices are at least as fine as the band's own grid, 0 where
-    they are four times coarser (its shortest waves, 2·cell long, would be
-    sampled at fewer than half a vertex per wavelength), linear in log₂ between.
+#: Wavenumber below which the spectrum's slope variance is left out of the total [rad m⁻¹]
+#: (waves over 60 km long: nothing of any sea spectrum here).
+LONGEST_WAVENUMBER = 1e-4
+
+
+def _fractal_weight(spacing: NDArray, cell: float) -> NDArray:
+    """Weight in [0, 1] of the fractal tile (grid cell ``cell`` [m]) at vertex ``spacing`` [m].
+
+    1 where the vertices are at least as fine as the tile's grid, 0 where
+    they are four times coarser, linear in log₂ between.
     """
     return np.clip(1.0 - np.log2(np.maximum(spacing, 1e-12) / cell) / 2.0, 0.0, 1.0)
+
+
+#: Quantities sampled from each level, in this order; the Jacobian-matrix entries as deviations
+#: from the identity (J_xx − 1, J_yy − 1, J_xy), which add over levels and cascades.
+_SAMPLED = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "xx", "yy", "xy")
+
+
+def _field(fields, name: str) -> NDArray:
+    """One sampled quantity of a level's :class:`~.fft_ocean.OceanFields` (see :data:`_SAMPLED`)."""
+    if name == "xx":
+        return fields.jacobian_xx - 1
+    if name == "yy":
+        return fields.jacobian_yy - 1
+    if name == "xy":
+        return fields.jacobian_xy
+    return getattr(fields, name)
 
 
 def _normals(jxx, jyy, jxy, sx, sy):
@@ -129,24 +158,36 @@ class FractalDetail:
 class SeaSurface:
     """A sea surface model that can be sampled at arbitrary rest points at time t.
 
+    FFT cascades end each band :data:`~.lod.LEVEL_POINTS_PER_WAVELENGTH`
+    points per wavelength short of their grid's limit
+    (:func:`~.cascades.cascade_band_edges_resolved`) and are sampled through
+    their level pyramids (:class:`~.lod.CascadeLevels`), so a vertex keeps
+    every wave its spacing resolves.
+
     With ``fractal_gamma`` > 0 the fractal detail of :class:`FractalDetail`
-    is added, ζ = η + γ η_fractal (heights and slopes), fading out with the
-    mesh's vertex spacing like the cascades. NOTE: the detail is a static tile
-    (it has no dispersion): it adds texture below the finest FFT waves, not motion.
+    is added, ζ = η + γ η_fractal (heights and slopes), at full weight where
+    the vertex spacing resolves its grid and none where it is four times
+    coarser. NOTE: the detail is a static tile (it has no dispersion): it adds
+    texture below the finest FFT waves, not motion; it is not part of the
+    spectrum's slope budget.
     """
 
     def __init__(self, ocean: OceanSettings):
         self.settings = ocean
         self.spectrum = directional_spectrum(ocean)
+        self.levels: tuple[CascadeLevels, ...] = ()
         if ocean.model == "FFT":
+            sizes = cascade_patch_sizes(ocean.patch_size, ocean.cascades)
+            grids = [OceanGrid(ocean.resolution, size) for size in sizes]
             self.cascades = CascadeOcean(
-                self.spectrum,
-                cascade_patch_sizes(ocean.patch_size, ocean.cascades),
-                resolution=ocean.resolution,
-                seed=ocean.seed,
-                choppiness=ocean.choppiness,
-                depth=ocean.wave_depth,
-                loop_period=ocean.loop_period or None,
+                self.spectrum, sizes, resolution=ocean.resolution, seed=ocean.seed, choppiness=ocean.choppiness,
+                depth=ocean.wave_depth, loop_period=ocean.loop_period or None,
+                band_edges=cascade_band_edges_resolved(grids, LEVEL_POINTS_PER_WAVELENGTH),
+            )
+            edges = self.cascades.band_edges
+            self.levels = tuple(
+                CascadeLevels(grid, edges[i], edges[i + 1], self._level_maker(i, edges[i], edges[i + 1]))
+                for i, grid in enumerate(self.cascades.grids)
             )
             self.components = None
         else:
@@ -162,34 +203,111 @@ class SeaSurface:
             self.fractal = FractalDetail.from_base(base, self.cascades.grids[finest].spacing,
                                                    ocean.fractal_size, ocean.seed)
 
+    def _level_maker(self, cascade: int, band_bottom: float, band_top: float):
+        """``make(grid, k_max)``: cascade ``cascade`` on ``grid``, its band cut at k_max, gain-compensated.
+
+        The band's own edges weight the lattice cells they cross by area
+        (:func:`~.cascades.annulus_fraction`: adjacent cascades share them);
+        a level's cut below the band top is sharp, so a mode is in a level or
+        not and the resolution rule of :mod:`.lod` holds mode by mode.
+        """
+        ocean = self.settings
+
+        def make(grid: OceanGrid, k_max: float) -> FFTOcean:
+            band = BandLimitedSpectrum(self.spectrum, band_bottom, band_top, grid.dk)
+            if k_max < band_top:
+                band = BandLimitedSpectrum(band, 0.0, k_max)
+            return FFTOcean(grid, seed=ocean.seed, choppiness=ocean.choppiness, depth=ocean.wave_depth,
+                            dtype=self.cascades.dtype, loop_period=ocean.loop_period or None, cascade=cascade,
+                            spectrum_function=GainCompensated(band, grid.spacing))
+
+        return make
+
     @property
     def finest_cell(self) -> float:
-        """Grid cell of the finest resolved waves [m] (half their wavelength)."""
-        return self.settings.patch_size / self.settings.resolution if self.cascades is None else min(
-            g.spacing for g in self.cascades.grids)
+        """π / k_max, k_max the largest wavenumber the geometry carries [m] (half the shortest wave)."""
+        if self.cascades is None:
+            return self.settings.patch_size / self.settings.resolution
+        return float(np.pi / self.cascades.band_edges[-1])
+
+    @property
+    def total_slope_variance(self) -> float:
+        """⟨s_x² + s_y²⟩ of all the spectrum's waves, from 60 km down to 1 mm long [-]."""
+        return unresolved_slope_variance(self.spectrum, LONGEST_WAVENUMBER, SHORTEST_WAVELENGTH)
+
+    def resolved_variance(self, spacing: NDArray | None) -> tuple[NDArray, NDArray]:
+        """Expected (height variance [m²], slope variance [-]) the vertices of ``spacing`` [m] carry.
+
+        The sum over cascades of :meth:`~.lod.CascadeLevels.resolved_variance`
+        (bilinear interpolation losses included); ``spacing`` None is the
+        full sea of every cascade. Only for the FFT model.
+        """
+        if self.cascades is None:
+            raise ValueError("the resolved variance is defined for the FFT model only")
+        shape = np.shape(spacing) if spacing is not None else ()
+        height, slope = np.zeros(shape), np.zeros(shape)
+        for levels in self.levels:
+            h, s = levels.resolved_variance(levels.weights(spacing, shape))
+            height, slope = height + h, slope + s
+        return height, slope
+
+    def unresolved_slope_variance(self, spacing: NDArray | None) -> NDArray:
+        """Slope variance the geometry at vertex spacing ``spacing`` [m] leaves out [-] (≥ 0).
+
+        Total (:attr:`total_slope_variance`) minus what the vertices carry
+        (:meth:`resolved_variance`), so the two add up to the spectrum's at
+        every distance (Bruneton, Neyret & Holzschuch 2010, Eq. 4 and §4.2).
+        For the sum-of-sines and Gerstner models, the waves beyond their
+        largest component wavenumber.
+        """
+        if self.cascades is None:
+            value = unresolved_slope_variance(self.spectrum, np.pi / self.finest_cell, SHORTEST_WAVELENGTH)
+            return np.full(np.shape(spacing) if spacing is not None else (), value)
+        distinct, inverse = np.unique(np.asarray(spacing if spacing is not None else 0.0), return_inverse=True)
+        _, resolved = self.resolved_variance(None if spacing is None else distinct)
+        missing = np.maximum(self.total_slope_variance - resolved, 0.0)
+        return missing if spacing is None else missing[inverse].reshape(np.shape(spacing))
+
+    def _level_fields(self, t: float) -> tuple[list[tuple[int, int]], list]:
+        """(cascade, level) indices of all non-empty levels, and their fields at time t [s]."""
+        entries = [(i, j) for i, levels in enumerate(self.levels) for j in range(levels.count - 1)]
+        return entries, [self.levels[i].oceans[j].fields(t) for i, j in entries]
+
+    def _weighted(self, x: NDArray, y: NDArray, t: float, spacing: NDArray | None, columns: slice) -> NDArray:
+        """Σ over levels of weight × the bilinearly sampled quantities ``_SAMPLED[columns]``, shape (q, *x.shape)."""
+        entries, fields = self._level_fields(t)
+        names = _SAMPLED[columns]
+        shape = np.shape(x)
+        total = np.zeros((len(names), int(np.prod(shape))))
+        flat_x, flat_y = np.ravel(x), np.ravel(y)
+        flat_spacing = None if spacing is None else np.ravel(np.broadcast_to(spacing, shape))
+        weights = [levels.weights(flat_spacing, (flat_x.size,)) for levels in self.levels]
+        for (i, j), f in zip(entries, fields):
+            w = weights[i][j]
+            where = np.flatnonzero(w > 0)
+            if where.size == 0:
+                continue
+            grid = self.levels[i].oceans[j].grid
+            # one interleaved (N², q) stack, so each corner is one gather of q values
+            stack = np.stack([_field(f, name) for name in names], axis=-1).reshape(-1, len(names))
+            corners, bilinear = bilinear_corners(grid, flat_x[where], flat_y[where])
+            part = sum(np.take(stack, c, axis=0) * b[:, None] for c, b in zip(corners, bilinear))
+            total[:, where] += (w[where][:, None] * part).T
+        return total.reshape(len(names), *shape)
 
     def sample(self, x: NDArray, y: NDArray, t: float, spacing: NDArray | None = None) -> SurfacePoints:
         """The surface above rest points (x, y) [m] at time t [s].
 
-        ``spacing`` [m], per point, fades out the cascades too fine for it
-        (:func:`lod_weight`); ``None`` keeps every wave.
+        ``spacing`` [m], per point, filters the waves by wavenumber to what
+        that spacing resolves (:mod:`.lod`); ``None`` keeps every wave.
         """
         if self.cascades is None:
             return self._sample_components(x, y, t)
-        frame = self.cascades.frame(t)
-        total = np.zeros((8, *np.shape(x)))
-        for i, grid in enumerate(self.cascades.grids):
-            weight = 1.0 if spacing is None else lod_weight(spacing, grid.spacing)
-            if np.all(weight == 0):
-                continue
-            s: SurfaceSample = frame.sample(x, y, cascades=[i])
-            parts = (s.height, s.displacement_x, s.displacement_y, s.slope_x, s.slope_y,
-                     s.jacobian_xx - 1, s.jacobian_yy - 1, s.jacobian_xy)
-            total += weight * np.stack(parts)
-        height, dx, dy, sx, sy, xx, yy, xy = total
+        height, dx, dy, sx, sy, xx, yy, xy = self._weighted(np.asarray(x, float), np.asarray(y, float), t, spacing,
+                                                             slice(0, 8))
         if self.fractal is not None:
             gamma = self.settings.fractal_gamma
-            weight = 1.0 if spacing is None else lod_weight(spacing, self.fractal.spacing)
+            weight = 1.0 if spacing is None else _fractal_weight(spacing, self.fractal.spacing)
             detail, detail_x, detail_y = self.fractal.sample(x, y)
             height = height + gamma * weight * detail  # ζ = η + γ η_fractal
             sx, sy = sx + gamma * weight * detail_x, sy + gamma * weight * detail_y
@@ -199,24 +317,12 @@ class SeaSurface:
     def jacobian(self, x: NDArray, y: NDArray, t: float, spacing: NDArray | None = None) -> NDArray:
         """Only the Jacobian determinant J of the horizontal map at rest points (x, y) at t [-].
 
-        The same value as ``sample(...).jacobian`` at less than half the cost
-        (three interpolated fields instead of eight): foam needs J alone.
+        The same value as ``sample(...).jacobian`` at less cost (three
+        interpolated fields instead of eight): foam needs J alone.
         """
         if self.cascades is None:
             return self._sample_components(x, y, t).jacobian
-        frame = self.cascades.frame(t)
-        xx = np.zeros(np.shape(x))
-        yy, xy = np.zeros_like(xx), np.zeros_like(xx)
-        for i, grid in enumerate(self.cascades.grids):
-            weight = 1.0 if spacing is None else lod_weight(spacing, grid.spacing)
-            if np.all(weight == 0):
-                continue
-            corners, weights = bilinear_corners(grid, np.asarray(x, float), np.asarray(y, float))
-            stack = frame.stacks[i][:, 5:8]  # J_xx − 1, J_yy − 1, J_xy
-            part = sum(np.take(stack, c, axis=0) * w[..., None] for c, w in zip(corners, weights))
-            xx += weight * part[..., 0]
-            yy += weight * part[..., 1]
-            xy += weight * part[..., 2]
+        xx, yy, xy = self._weighted(np.asarray(x, float), np.asarray(y, float), t, spacing, slice(5, 8))
         return (1 + xx) * (1 + yy) - xy * xy
 
     def _sample_components(self, x, y, t) -> SurfacePoints:

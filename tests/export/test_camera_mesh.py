@@ -34,15 +34,22 @@ def test_export_writes_an_upward_mesh_and_its_lod_table(tmp_path):
     assert r[-1, 0] == np.float32(2000.0)  # exact: float32 storage absorbs float64 last bits of r_out
 
 
-def test_lod_weights_fade_fine_cascades_with_distance():
+def test_lod_weights_filter_by_wavenumber_with_distance():
     table = camera_mesh_table(scene_from_dict(SCENE))
-    w = np.array(table["lod_weight_per_ring"])  # (rings, cascades), cascades largest first
-    assert w.shape == (table["rings"], 3)
-    assert np.all((w >= 0) & (w <= 1))
-    assert np.all(np.diff(w, axis=0) <= ROUNDOFF)  # never grows outwards (weights: scale 1)
-    # Exact 1 and 0: the weight is clipped there (its raw value is 1.65 and −4.3).
-    assert np.all(w[0] == 1.0)  # near the camera every cascade is resolved
-    assert w[-1, -1] == 0.0 and w[-1, 0] < 1.0  # far away the finest is gone, even the largest fades
+    spacing = np.array(table["ring_spacing_m"])
+    for i, cutoffs in enumerate(table["cascade_level_cutoffs_rad_m"]):
+        w = np.array([ring[i] for ring in table["lod_weight_per_ring"]])  # (rings, levels)
+        assert w.shape == (table["rings"], len(cutoffs))
+        np.testing.assert_allclose(w.sum(axis=1), 1.0, rtol=ROUNDOFF)  # the weights of a ring add up to 1
+        # effective weight of a mode at each level cutoff: Σ_j w_j 1[k < K_j]; a wave ≥ 8 vertices long is
+        # whole, ≤ 2 vertices long gone (the documented rule)
+        for k in cutoffs[1:]:
+            weight = w @ (k < np.array(cutoffs)).astype(float)
+            vertices = 2 * np.pi / k / spacing
+            assert np.all(weight[vertices >= 8] == 1.0) and np.all(weight[vertices <= 2] == 0.0)
+    alpha = np.array(table["ring_beckmann_alpha"])
+    assert np.all(np.diff(alpha) >= -ROUNDOFF)  # roughness grows outwards as the mesh carries less
+    assert alpha[-1] ** 2 <= table["total_slope_variance"] * (1 + ROUNDOFF)
 
 
 def test_cli_geometry_camera_mesh(tmp_path, capsys):

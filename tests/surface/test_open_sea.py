@@ -6,7 +6,7 @@ import pytest
 from oceanrender.scene import scene_from_dict
 from oceanrender.surface.open_sea import WaterBody
 from oceanrender.surface.patch_mesh import signed_volume
-from oceanrender.waves.sea import lod_weight
+from oceanrender.surface.radial_mesh import HORIZON_GAP_DEG
 from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 
@@ -14,13 +14,6 @@ def scene(**sections):
     base = {"ocean": {"resolution": 32, "patch_size": 64.0, "cascades": 2, "wind_speed": 10.0}}
     base.update(sections)
     return scene_from_dict({"name": "t", **base})
-
-
-def test_lod_weight_limits():
-    assert lod_weight(np.array([0.1]), 1.0)[0] == 1.0
-    assert lod_weight(np.array([1.0]), 1.0)[0] == 1.0
-    assert lod_weight(np.array([2.0]), 1.0)[0] == pytest.approx(0.5)
-    assert lod_weight(np.array([4.0]), 1.0)[0] == 0.0
 
 
 @pytest.mark.parametrize("kind", ["patch", "radial"])
@@ -38,23 +31,57 @@ def test_patch_body_matches_the_single_fft_patch():
     s = scene(ocean={"resolution": 16, "patch_size": 40.0, "cascades": 1})
     body = WaterBody(s)
     surface = body.surface(2.0)
-    fields = body.sea.cascades.cascades[0].fields(2.0)
+    fields = body.sea.levels[0].oceans[0].fields(2.0)  # level 0 of the only cascade
     # the cascades are float32; the body sums and recombines them in float64
     np.testing.assert_allclose(surface.displacement[..., 2], fields.height, rtol=0,
                                atol=ROUNDOFF32 * np.abs(fields.height).max())
     np.testing.assert_allclose(surface.jacobian, fields.jacobian, rtol=0, atol=ROUNDOFF32)  # J: scale 1
 
 
-def test_far_vertices_drop_the_fine_waves():
+def test_far_vertices_keep_only_the_waves_they_resolve():
     s = scene(mesh={"kind": "radial", "outer_radius": 5000.0, "segments": 64})
     body = WaterBody(s)
     surface = body.surface(0.0)
-    far = body.spacing > 4 * body.sea.cascades.grids[0].spacing
-    assert far.any()
+    # where even the longest wave (the largest patch) is at most 2 vertices long, nothing is left
+    flat = body.spacing >= body.sea.cascades.patch_sizes[0] / 2
+    assert flat.any() and not flat.all()
     scale = np.abs(surface.displacement).max()  # of the near vertices, which keep their waves
-    np.testing.assert_allclose(surface.displacement[far], 0.0, rtol=0, atol=ROUNDOFF * scale)
-    np.testing.assert_allclose(surface.normals[far], np.tile([0.0, 0.0, 1.0], (far.sum(), 1)), rtol=0,
+    np.testing.assert_allclose(surface.displacement[flat], 0.0, rtol=0, atol=ROUNDOFF * scale)
+    np.testing.assert_allclose(surface.normals[flat], np.tile([0.0, 0.0, 1.0], (flat.sum(), 1)), rtol=0,
                                atol=ROUNDOFF)  # unit vectors: scale 1
+    # vertices 8–64 m apart drop the 3 m waves of the finer cascade but keep the 64 m patch's long waves
+    middle = (body.spacing > 8.0) & (body.spacing < 16.0)
+    assert np.std(surface.displacement[middle, 2]) > 0.1 * np.std(surface.displacement[:, 2])
+
+
+def test_every_vertex_carries_the_roughness_of_what_it_drops():
+    s = scene(mesh={"kind": "radial", "outer_radius": 5000.0, "segments": 64})
+    body = WaterBody(s)
+    geometry = body.frame(0.0)
+    top = body.radial.top_vertex_count
+    total = body.sea.total_slope_variance
+    expected = np.sqrt(body.sea.unresolved_slope_variance(body.spacing))
+    np.testing.assert_allclose(geometry.roughness[:top], expected, rtol=ROUNDOFF32)  # stored as float32
+    np.testing.assert_allclose(geometry.roughness[top:], np.sqrt(total), rtol=ROUNDOFF32)  # far ring, skirt
+    assert geometry.roughness[0] < geometry.roughness[top - 1]  # the centre resolves more than the edge
+    # with a fixed α in the scene, no per-vertex attribute
+    fixed = WaterBody(scene(mesh={"kind": "radial", "outer_radius": 5000.0, "segments": 64},
+                            water={"surface_roughness": 0.1}))
+    assert fixed.frame(0.0).roughness is None
+
+
+def test_the_sea_reaches_the_horizon():
+    """The flat far ring lies beyond h / tan(gap): from the camera its edge is < HORIZON_GAP_DEG below
+    the horizon, for camera heights from 0.5 m to 1 km."""
+    for height in (0.5, 30.0, 1000.0):
+        s = scene(mesh={"kind": "radial", "outer_radius": 2000.0, "segments": 32},
+                  camera={"position": [0.0, 0.0, height], "target": [0.0, 100.0, height]})
+        body = WaterBody(s)
+        positions = body.frame(0.0).positions
+        far = positions[body.radial.top_vertex_count: body.radial.top_vertex_count + 32]
+        distance = np.hypot(far[:, 0], far[:, 1]) * np.cos(np.pi / 32)  # nearest point of a far edge
+        gap = np.degrees(np.arctan(height / distance))
+        assert np.all(gap <= HORIZON_GAP_DEG * (1 + ROUNDOFF32)) and np.all(far[:, 2] == 0)
 
 
 def test_foam_forms_only_where_the_surface_folds():
