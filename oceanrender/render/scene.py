@@ -102,13 +102,18 @@ def look_at_transform(position, target):
 
 
 def perspective_sensor(camera: CameraSettings, film: dict, spp: int) -> dict:
-    """Pinhole ``perspective`` sensor; ``camera.fov`` is the horizontal field of view [deg]."""
+    """Pinhole ``perspective`` sensor; ``camera.fov`` is the horizontal field of view [deg].
+
+    Clip distances [m]: 1 cm, and 10⁸ m, beyond the water body's far ring
+    (:func:`oceanrender.surface.radial_mesh.horizon_radius`: 1.1·10⁷ m from 1 km up),
+    which Mitsuba's default (10⁴ m) would cut off, showing the black sky below the horizon.
+    """
     return {
         "type": "perspective",
         "fov": float(camera.fov),
         "fov_axis": "x",
         "near_clip": 0.01,
-        "far_clip": 1.0e5,
+        "far_clip": 1.0e8,
         "to_world": look_at_transform(camera.position, camera.target),
         "film": film,
         "sampler": {"type": "independent", "sample_count": int(spp)},
