@@ -87,7 +87,9 @@ class OceanSettings(_Section):
     """
 
     model: Literal["FFT", "sum of sines", "Gerstner"] = "FFT"
-    spectrum: Literal["Phillips 2001", "Pierson-Moskowitz 1964", "JONSWAP 1973", "TMA 1985"] = "JONSWAP 1973"
+    spectrum: Literal["Phillips 2001", "Pierson-Moskowitz 1964", "JONSWAP 1973", "TMA 1985", "Elfouhaily 1997"] = (
+        "JONSWAP 1973"
+    )
     spreading: Literal["cos2", "Mitsuyasu 1975", "Hasselmann 1980", "Donelan-Banner 1985"] | None = Field(
         None, description="directional spreading; none = the spectrum's own (Phillips) or Mitsuyasu 1975"
     )
@@ -131,8 +133,12 @@ class OceanSettings(_Section):
     def _consistent(self) -> "OceanSettings":
         if self.spectrum == "Phillips 2001" and self.spreading is not None:
             raise ValueError("spreading must be left out for 'Phillips 2001' (it has its own cos² spreading)")
+        if self.spectrum == "Elfouhaily 1997" and self.spreading is not None:
+            raise ValueError("spreading must be left out for 'Elfouhaily 1997' (it has its own spreading)")
         if self.alpha is not None and self.spectrum in ("JONSWAP 1973", "TMA 1985"):
             raise ValueError("alpha follows from the fetch for JONSWAP/TMA; leave it out")
+        if self.alpha is not None and self.spectrum == "Elfouhaily 1997":
+            raise ValueError("alpha follows from the wave age and wind stress for 'Elfouhaily 1997'; leave it out")
         return self
 
 

@@ -17,7 +17,10 @@ Two kinds of published spectra are implemented:
   JONSWAP 1973, TMA 1985), which :class:`DirectionalSpectrum` combines with a
   directional spreading D(θ; ω) of :mod:`oceanrender.waves.spreading` and
   the dispersion relation into Ψ;
-* Tessendorf's (2001) Phillips spectrum, defined directly as Ψ(kx, ky).
+* spectra defined directly as Ψ(kx, ky): Tessendorf's (2001) Phillips
+  spectrum and the unified long- and short-wave spectrum of Elfouhaily et al.
+  (1997, :mod:`oceanrender.waves.elfouhaily`), which reaches the
+  gravity–capillary waves that set the sea's mean-square slope.
 
 :class:`DirectionalSpectrum` is the one object the rest of the package uses.
 Methods are chosen by name through :data:`SPECTRA` (all names),
@@ -35,6 +38,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.special import k1
 
+from .elfouhaily import (
+    ELFOUHAILY_KM,
+    inverse_wave_age_Elfouhaily1997,
+    omnidirectional_spectrum_Elfouhaily1997,
+    peak_wavenumber_Elfouhaily1997,
+    phase_speed_Elfouhaily1997,
+    spectrum_Elfouhaily1997,
+)
 from .spreading import SPREADING, directional_spreading, spreading_cos2s
 
 __all__ = [
@@ -909,6 +920,7 @@ FREQUENCY_SPECTRA: dict[str, Callable[..., NDArray[np.float64]]] = {
 
 WAVENUMBER_SPECTRA: dict[str, Callable[..., NDArray[np.float64]]] = {
     "Phillips 2001": spectrum_Phillips2001,
+    "Elfouhaily 1997": spectrum_Elfouhaily1997,
 }
 """Spectra defined directly as Ψ(kx, ky) [m⁴] by method name."""
 
@@ -977,9 +989,11 @@ class DirectionalSpectrum:
     spreading : str or None, optional
         Directional spreading, a key of
         :data:`oceanrender.waves.spreading.SPREADING`; ``None`` (default) is
-        :data:`DEFAULT_SPREADING` for the frequency spectra. "Phillips 2001"
-        carries its own symmetric cos² (Tessendorf's |k̂·ŵ|²) and requires
-        ``None``; it stays ``None`` for it.
+        :data:`DEFAULT_SPREADING` for the frequency spectra. The
+        :data:`WAVENUMBER_SPECTRA` carry their own spreading and require
+        ``None``, which they keep: "Phillips 2001" the symmetric cos²
+        (Tessendorf's |k̂·ŵ|²), "Elfouhaily 1997" (1 + Δ(k) cos 2φ)/(2π)
+        folded downwind (:func:`~oceanrender.waves.elfouhaily.spectrum_Elfouhaily1997`).
     wind_speed : float, optional
         Wind speed 10 m above the sea U₁₀ [m s⁻¹], in (0, inf). The
         Pierson–Moskowitz spectrum is evaluated at U₁₉.₅ = 1.026 U₁₀
@@ -988,19 +1002,25 @@ class DirectionalSpectrum:
     wind_direction : float, optional
         Direction the wind blows toward, counter-clockwise from +x [rad].
     fetch : float, optional
-        Fetch F [m], in (0, inf); used by "JONSWAP 1973" and "TMA 1985".
+        Fetch F [m], in (0, inf); used by "JONSWAP 1973", "TMA 1985" and
+        "Elfouhaily 1997", which also accepts ``np.inf`` (a fully developed sea).
     gamma : float, optional
         JONSWAP peak enhancement γ [-], in [1, 10]; "JONSWAP 1973", "TMA 1985".
+        "Elfouhaily 1997" takes γ from its inverse wave age and refuses any
+        value but the default :data:`JONSWAP_GAMMA`.
     depth : float, optional
         Water depth d [m], in (0, inf]; ``np.inf`` is deep water. Enters the
         dispersion relation of every frequency spectrum (so Ψ(k) changes but
-        m0 does not) and the TMA depth function; "Phillips 2001" ignores it.
+        m0 does not) and the TMA depth function; the :data:`WAVENUMBER_SPECTRA`
+        ignore it (their Ψ(k) is deep-water as published; only their
+        :meth:`frequency_spectrum` uses it).
     small_wave_length : float, optional
         Suppression length ℓ [m], in [0, inf): Ψ is multiplied by exp(−k² ℓ²).
     alpha : float or None, optional
         Overrides α of "Phillips 2001" (default :data:`PHILLIPS_ALPHA`) or of
         "Pierson-Moskowitz 1964" (default :data:`PIERSON_MOSKOWITZ_ALPHA`) [-],
-        in (0, inf). Not accepted by the fetch-law spectra (JONSWAP, TMA).
+        in (0, inf). Not accepted by the fetch-law spectra (JONSWAP, TMA) nor
+        by "Elfouhaily 1997" (α_p and α_m follow from the wave age and u*).
     swell_height : float, optional
         Significant wave height of the swell [m], in [0, inf); 0 (default) is no swell.
     swell_period : float, optional
@@ -1037,6 +1057,13 @@ class DirectionalSpectrum:
     (:attr:`peak_frequency`): JONSWAP and TMA use the JONSWAP fetch law,
     Pierson–Moskowitz 0.877 g/U₁₉.₅.
 
+    "Elfouhaily 1997" is Ψ of
+    :func:`~oceanrender.waves.elfouhaily.spectrum_Elfouhaily1997` with
+    ``folded=True``: its centrosymmetric spreading is moved onto the downwind
+    half plane, which keeps every second-order statistic of heights and
+    slopes (they depend on Ψ(k) + Ψ(−k) only) and makes all its waves travel
+    with the wind. Swell and ℓ act on it as on the other spectra.
+
     References
     ----------
     .. [1] L. H. Holthuijsen, Waves in Oceanic and Coastal Waters, Cambridge
@@ -1072,8 +1099,10 @@ class DirectionalSpectrum:
             raise ValueError(f"method: unknown wave spectrum {self.method!r}; known: {', '.join(map(repr, SPECTRA))}")
         if self.method in WAVENUMBER_SPECTRA:
             if self.spreading is not None:
+                own = ("symmetric cos² spreading (Tessendorf's |k̂·ŵ|²)" if self.method == "Phillips 2001"
+                       else "spreading (1 + Δ(k) cos 2φ)/(2π) of Elfouhaily et al. (1997), folded downwind")
                 raise ValueError(
-                    f"spreading: {self.method!r} carries its own symmetric cos² spreading (Tessendorf's |k̂·ŵ|²); "
+                    f"spreading: {self.method!r} carries its own {own}; "
                     f"leave spreading unset (None), got {self.spreading!r}"
                 )
         elif self.spreading is None:
@@ -1085,12 +1114,26 @@ class DirectionalSpectrum:
         U = self.wind_speed
         _require("wind_speed", U, finite(U) and U > 0, "in (0, inf) [m s⁻¹]")
         _require("wind_direction", self.wind_direction, finite(self.wind_direction), "finite [rad]")
-        _require("fetch", self.fetch, finite(self.fetch) and self.fetch > 0, "in (0, inf) [m]")
+        if self.method == "Elfouhaily 1997":
+            _require("fetch", self.fetch, _number(self.fetch) and self.fetch > 0,
+                     "in (0, inf] [m] (np.inf for a fully developed sea)")
+        else:
+            _require("fetch", self.fetch, finite(self.fetch) and self.fetch > 0, "in (0, inf) [m]")
         _require("gamma", self.gamma, finite(self.gamma) and 1 <= self.gamma <= 10, "in [1, 10] [-]")
+        if self.method == "Elfouhaily 1997" and self.gamma != JONSWAP_GAMMA:
+            raise ValueError(
+                f"gamma: 'Elfouhaily 1997' takes γ from its inverse wave age (1.7 + 6 log₁₀ Ω_c, Eq. 3 of "
+                f"Elfouhaily et al. 1997); leave gamma at its default {JONSWAP_GAMMA}, got {self.gamma!r}"
+            )
         _require("depth", self.depth, _number(self.depth) and self.depth > 0, "in (0, inf] [m] (np.inf for deep water)")
         ell = self.small_wave_length
         _require("small_wave_length", ell, finite(ell) and ell >= 0, "in [0, inf) [m]")
         if self.alpha is not None:
+            if self.method == "Elfouhaily 1997":
+                raise ValueError(
+                    f"alpha: 'Elfouhaily 1997' takes α_p from the inverse wave age and α_m from the friction "
+                    f"velocity (Eqs. 34 and 44 of Elfouhaily et al. 1997); leave alpha unset (None), got {self.alpha!r}"
+                )
             if self.method not in ("Phillips 2001", "Pierson-Moskowitz 1964"):
                 raise ValueError(
                     f"alpha: {self.method!r} takes α from the JONSWAP fetch law; leave alpha unset (None), "
@@ -1121,8 +1164,14 @@ class DirectionalSpectrum:
 
         JONSWAP and TMA: the fetch law :func:`peak_frequency_JONSWAP1973`;
         Pierson–Moskowitz: 0.877 g/U₁₉.₅; Phillips 2001: the peak (4/5)^{1/4} g/U of
-        its deep-water frequency spectrum α g² ω⁻⁵ exp(−(g/(U ω))⁴).
+        its deep-water frequency spectrum α g² ω⁻⁵ exp(−(g/(U ω))⁴); Elfouhaily 1997:
+        ω = k_p c(k_p) of its peak wavenumber k_p = g Ω_c²/U₁₀² (Eqs. 3, 24 and 37 of
+        Elfouhaily et al. 1997), ≈ Ω_c g/U₁₀.
         """
+        if self.method == "Elfouhaily 1997":
+            omega_c = inverse_wave_age_Elfouhaily1997(self.wind_speed, self.fetch, self.g)
+            k_p = peak_wavenumber_Elfouhaily1997(self.wind_speed, omega_c, self.g)
+            return float(k_p * phase_speed_Elfouhaily1997(k_p, self.g))
         if self.method == "Pierson-Moskowitz 1964":
             return float(peak_frequency_PiersonMoskowitz1964(self.wind_speed_19_5, g=self.g))
         if self.method in ("JONSWAP 1973", "TMA 1985"):
@@ -1148,7 +1197,10 @@ class DirectionalSpectrum:
         -------
         ndarray
             S [m² s]. For "Phillips 2001", F(k) dk/dω with F(k) = (α/2) k⁻³ exp(−1/(k L_w)²)
-            and k = k(ω, d).
+            and k = k(ω, d); for "Elfouhaily 1997", S(k) dk/dω with S(k) of
+            :func:`~oceanrender.waves.elfouhaily.omnidirectional_spectrum_Elfouhaily1997`
+            and the same gravity-wave k(ω, d) (the dispersion relation the FFT ocean
+            moves the waves with, not the paper's capillary c(k)), so ∫ S dω = ∫ S dk.
         """
         omega = np.asarray(omega, dtype=np.float64)
         if self.method == "Pierson-Moskowitz 1964":
@@ -1159,6 +1211,10 @@ class DirectionalSpectrum:
         if self.method == "TMA 1985":
             return spectrum_TMA1985(omega, self.wind_speed, self.fetch, self.depth, self.gamma, g=self.g)
         k = wavenumber_from_frequency(omega, self.depth, self.g)
+        if self.method == "Elfouhaily 1997":
+            omni = omnidirectional_spectrum_Elfouhaily1997(k, self.wind_speed, self.fetch, g=self.g)
+            with np.errstate(invalid="ignore"):  # ω = 0: S = 0, c_g = inf
+                return np.where((omega <= 0) | (omni == 0), 0.0, omni / group_velocity(k, self.depth, self.g))
         alpha = PHILLIPS_ALPHA if self.alpha is None else self.alpha
         L_w = self.wind_speed**2 / self.g
         with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
@@ -1188,9 +1244,24 @@ class DirectionalSpectrum:
             total = total * np.exp(-np.square(k * self.small_wave_length))
         return total
 
-    def _polar(self, k: NDArray[np.float64], theta: NDArray[np.float64], kx=None, ky=None) -> NDArray[np.float64]:
-        """Ψ at wavenumber magnitude k > 0 and direction θ (or components kx, ky, if given) [m⁴]."""
-        if self.method in WAVENUMBER_SPECTRA:
+    def _polar(
+        self, k: NDArray[np.float64], theta: NDArray[np.float64], kx=None, ky=None, folded: bool = True
+    ) -> NDArray[np.float64]:
+        """Ψ at wavenumber magnitude k > 0 and direction θ (or components kx, ky, if given) [m⁴].
+
+        ``folded=False`` gives "Elfouhaily 1997" as published (centrosymmetric), with the
+        same second-order statistics; the other methods ignore it.
+        """
+        if self.method == "Elfouhaily 1997":
+            if kx is None:
+                kx, ky = k * np.cos(theta), k * np.sin(theta)
+            psi = spectrum_Elfouhaily1997(
+                kx, ky, self.wind_speed, self.wind_direction, fetch=self.fetch,
+                small_wave_length=self.small_wave_length, folded=folded, g=self.g,
+            )
+            if self.swell_height == 0:
+                return psi
+        elif self.method in WAVENUMBER_SPECTRA:
             alpha = PHILLIPS_ALPHA if self.alpha is None else self.alpha
             if kx is None:
                 kx, ky = k * np.cos(theta), k * np.sin(theta)
@@ -1274,17 +1345,26 @@ class DirectionalSpectrum:
         deviations of ln ω around the swell peak and cut at k = 10/ℓ: the
         omitted variance is below 1e-8 of m0.
         dkx dky = k² d(ln k) dθ.
+
+        "Elfouhaily 1997" is integrated unfolded (the same m0, see the class
+        Notes): its folded form jumps on the line across the wind, which the
+        periodic rule would see, while the published form is a polynomial of
+        degree 2 in cos θ, integrated exactly. Its range reaches at least
+        10 k_m = 3700 rad m⁻¹, past the capillary peak at k_m, so that the
+        omitted variance stays below 1e-8 of m0 at every wind speed.
         """
         omega_low, omega_high = self._frequency_range()
         # NOTE: the deep-water k is the smaller one; "Phillips 2001" is cut in deep-water k at any depth.
         low = float(wavenumber_from_frequency(omega_low, np.inf, self.g))
         high = float(wavenumber_from_frequency(omega_high, self.depth, self.g))
+        if self.method == "Elfouhaily 1997":
+            high = max(high, 10 * ELFOUHAILY_KM)  # past the capillary peak: F_m(10 k_m) = e^{−81/4}
         if self.small_wave_length > 0:
             high = max(min(high, 10 / self.small_wave_length), 2 * low)
         ln_k = np.linspace(np.log(low), np.log(high), radial_samples)
         theta = self.wind_direction + np.linspace(0, 2 * np.pi, angular_samples, endpoint=False)
         k = np.exp(ln_k)[:, None]
-        psi = self._polar(k, theta[None, :])
+        psi = self._polar(k, theta[None, :], folded=False)
         radial = psi.sum(axis=1) * (2 * np.pi / angular_samples) * k[:, 0] ** 2
         return float(np.trapezoid(radial, ln_k))
 
@@ -1341,8 +1421,10 @@ def wave_spectrum(method: str, kx: ArrayLike, ky: ArrayLike, **kwargs) -> NDArra
 
     Notes
     -----
-    :data:`WAVENUMBER_SPECTRA` ("Phillips 2001") are called directly, with their
-    own keywords (array parameters broadcast; a calm sea, U = 0, gives 0).
+    :data:`WAVENUMBER_SPECTRA` ("Phillips 2001", "Elfouhaily 1997") are called
+    directly, with their own keywords (array parameters broadcast; a calm sea,
+    U = 0, gives 0); "Elfouhaily 1997" takes ``fetch`` (default 100 km) and ignores
+    ``alpha``, and is folded downwind as in :class:`DirectionalSpectrum`.
     :data:`FREQUENCY_SPECTRA` are turned into Ψ by a :class:`DirectionalSpectrum`
     built from the keywords that are its fields (``spreading``, ``fetch``,
     ``gamma``, ``depth``, swell, ...; ``alpha`` is dropped for JONSWAP and TMA).
