@@ -21,6 +21,7 @@ resolved plus unresolved slopes add up to the spectrum's at every distance.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
 import numpy as np
@@ -47,6 +48,7 @@ class WaterBody:
         mesh = scene.mesh
         self.camera_path = None
         self._moved_grid: tuple[float, RadialGrid] | None = None  # (t, grid) of the last grid_at(t)
+        self._history: dict[float, NDArray] = {}  # foam history: Jacobian at grid times (still camera)
         if mesh.kind == "radial":
             from ..scene.motion import camera_motion  # noqa: PLC0415
 
@@ -143,22 +145,44 @@ class WaterBody:
         points of time t (fixed points of the sea), not along the grid's path.
 
         The accumulation (:func:`~oceanrender.waves.foam.foam_step`) starts
-        from clear water ``history × decay_time`` before t and advances in steps
-        of half a decay time (``FOAM_STEPS`` at most), so it is frame-rate
-        independent and reproducible for any t.
+        from clear water on the grid of times k Δ (Δ = ``history × decay_time``
+        / steps, half a decay time or more, at most ``FOAM_STEPS`` steps) just
+        over ``history × decay_time`` before t, steps along that grid with the
+        Jacobian at each grid time, and ends with a part step to t itself, so it
+        is frame-rate independent and every frame follows from (scene, t) alone.
+
+        NOTE: the grid times do not depend on t, so consecutive frames of a
+        still camera share their history: its Jacobians are kept
+        (:attr:`_history`) and a frame computes one, not three. A kept value is
+        the same computation on the same inputs as a fresh one, so a resumed
+        run renders what an uninterrupted one does.
         """
         foam = self.scene.foam
         window = foam.history * foam.decay_time
         steps = int(min(FOAM_STEPS, max(2, np.ceil(2 * foam.history))))
-        times = t - window + window * np.arange(1, steps + 1) / steps
+        step = window / steps
+        last = math.floor(t / step + 1e-9)  # the last grid time at or before t
+        times = [(last - steps + 1 + j) * step for j in range(steps)]
         rest_x, rest_y = self.rest_points(t)
+        reuse = self.camera_path is None  # the rest points never move
+        kept = self._history if reuse else {}
         coverage = np.zeros(np.shape(rest_x))
-        for i, step_time in enumerate(times):
-            if i == steps - 1 and jacobian_now is not None:
-                jacobian = jacobian_now  # the last step is t itself: reuse the frame's own J
+        previous = times[0] - step
+        for time in times:
+            if abs(time - t) < 1e-9 and jacobian_now is not None:
+                jacobian = jacobian_now  # the grid time is t itself: reuse the frame's own J
+            elif time in kept:
+                jacobian = kept[time]
             else:
-                jacobian = self.sea.jacobian(rest_x, rest_y, float(step_time), self.spacing)
-            coverage = foam_step(coverage, jacobian, window / steps, foam.threshold, foam.decay_time, foam.gain)
+                jacobian = self.sea.jacobian(rest_x, rest_y, float(time), self.spacing)
+            kept[time] = jacobian
+            coverage = foam_step(coverage, jacobian, time - previous, foam.threshold, foam.decay_time, foam.gain)
+            previous = time
+        if t - previous > 1e-9:
+            jacobian = jacobian_now if jacobian_now is not None else self.sea.jacobian(rest_x, rest_y, t, self.spacing)
+            coverage = foam_step(coverage, jacobian, t - previous, foam.threshold, foam.decay_time, foam.gain)
+        if reuse:
+            self._history = {time: kept[time] for time in times}
         return coverage
 
     def frame(self, t: float) -> FrameGeometry:
