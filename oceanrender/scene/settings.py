@@ -139,6 +139,8 @@ class OceanSettings(_Section):
             raise ValueError("alpha follows from the fetch for JONSWAP/TMA; leave it out")
         if self.alpha is not None and self.spectrum == "Elfouhaily 1997":
             raise ValueError("alpha follows from the wave age and wind stress for 'Elfouhaily 1997'; leave it out")
+        if self.gamma != 3.3 and self.spectrum == "Elfouhaily 1997":
+            raise ValueError("gamma follows from the inverse wave age for 'Elfouhaily 1997'; leave it out")
         return self
 
 

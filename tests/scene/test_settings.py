@@ -222,3 +222,9 @@ def test_monotone_sun_keyed_above_the_horizon_stays_above_it(tmp_path):
     # The keys that Catmull-Rom takes below the horizon (see above) are valid with the default.
     scene = load_scene(write(tmp_path, "[output]\nframes = [0, 48]\n" + DIPPING_SUN_KEYS))
     assert scene.sun.interpolation == "monotone cubic"
+
+
+@pytest.mark.parametrize("key, value", [("gamma", 2.0), ("alpha", 0.01), ("spreading", "Mitsuyasu 1975")])
+def test_elfouhaily_refuses_what_it_sets_itself(key, value):
+    with pytest.raises(SceneError, match=key):
+        scene_from_dict({"name": "e", "ocean": {"spectrum": "Elfouhaily 1997", key: value}})
