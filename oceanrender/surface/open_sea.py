@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import NDArray
@@ -89,7 +90,7 @@ class WaterBody:
         return (self.radial is not None and self.sea.cascades is not None
                 and self.scene.water.surface_roughness == "auto")
 
-    @property
+    @cached_property
     def vertex_roughness(self) -> NDArray[np.float32]:
         """Beckmann α per vertex [-]: √(unresolved slope variance) on the rings, √(total) beyond.
 
@@ -97,12 +98,10 @@ class WaterBody:
         spectrum's slopes are roughness there. Fixed for the body (the
         spacing of a vertex never changes).
         """
-        if not hasattr(self, "_vertex_roughness"):
-            top = np.sqrt(self.sea.unresolved_slope_variance(self.spacing))
-            alpha = np.full(self.vertex_count, np.sqrt(self.sea.total_slope_variance))
-            alpha[: top.size] = top
-            self._vertex_roughness = alpha.astype(np.float32)
-        return self._vertex_roughness
+        top = np.sqrt(self.sea.unresolved_slope_variance(self.spacing))
+        alpha = np.full(self.vertex_count, np.sqrt(self.sea.total_slope_variance))
+        alpha[: top.size] = top
+        return alpha.astype(np.float32)
 
     def camera_height(self, t: float) -> float:
         """Height of the camera above the mean sea level at time t [s] [m]."""

@@ -320,6 +320,21 @@ class SurfaceSample:
 _SAMPLED = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "xx", "yy", "xy")
 
 
+def sampled_field(fields: OceanFields, name: str) -> NDArray:
+    """One interpolated quantity of a patch's fields, by its name in :data:`SAMPLED` (J entries minus the identity)."""
+    if name == "xx":
+        return fields.jacobian_xx - 1
+    if name == "yy":
+        return fields.jacobian_yy - 1
+    if name == "xy":
+        return fields.jacobian_xy
+    return getattr(fields, name)
+
+
+#: Public name of the sampled quantities (used by :mod:`oceanrender.waves.sea`).
+SAMPLED = _SAMPLED
+
+
 def _bilinear_corners(grid: OceanGrid, x: NDArray, y: NDArray):
     """Flat indices of the 4 surrounding nodes and their bilinear weights, periodic in L."""
     n = grid.resolution
@@ -374,11 +389,8 @@ class CascadeFrame:
         for f in self.fields:
             n = f.resolution
             stack = np.empty((n, n, len(_SAMPLED)), f.height.dtype)
-            for i, name in enumerate(_SAMPLED[:5]):
-                stack[..., i] = getattr(f, name)
-            stack[..., 5] = f.jacobian_xx - 1
-            stack[..., 6] = f.jacobian_yy - 1
-            stack[..., 7] = f.jacobian_xy
+            for i, name in enumerate(_SAMPLED):
+                stack[..., i] = sampled_field(f, name)
             stacks.append(stack.reshape(n * n, len(_SAMPLED)))
         return tuple(stacks)
 

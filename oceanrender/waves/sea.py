@@ -19,8 +19,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..scene import OceanSettings
-from .cascades import (BandLimitedSpectrum, CascadeOcean, bilinear_corners,
-                       cascade_band_edges_resolved, cascade_patch_sizes)
+from .cascades import (SAMPLED, BandLimitedSpectrum, CascadeOcean, bilinear_corners,
+                       cascade_band_edges_resolved, cascade_patch_sizes, sampled_field)
 from .fft_ocean import FFTOcean, OceanGrid
 from .fractal import estimate_fbm_parameters, fractal_detail
 from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from_spectrum
@@ -64,22 +64,6 @@ def _fractal_weight(spacing: NDArray, cell: float) -> NDArray:
     they are four times coarser, linear in log₂ between.
     """
     return np.clip(1.0 - np.log2(np.maximum(spacing, 1e-12) / cell) / 2.0, 0.0, 1.0)
-
-
-#: Quantities sampled from each level, in this order; the Jacobian-matrix entries as deviations
-#: from the identity (J_xx − 1, J_yy − 1, J_xy), which add over levels and cascades.
-_SAMPLED = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "xx", "yy", "xy")
-
-
-def _field(fields, name: str) -> NDArray:
-    """One sampled quantity of a level's :class:`~.fft_ocean.OceanFields` (see :data:`_SAMPLED`)."""
-    if name == "xx":
-        return fields.jacobian_xx - 1
-    if name == "yy":
-        return fields.jacobian_yy - 1
-    if name == "xy":
-        return fields.jacobian_xy
-    return getattr(fields, name)
 
 
 def _normals(jxx, jyy, jxy, sx, sy):
@@ -274,9 +258,9 @@ class SeaSurface:
         return entries, [self.levels[i].oceans[j].fields(t) for i, j in entries]
 
     def _weighted(self, x: NDArray, y: NDArray, t: float, spacing: NDArray | None, columns: slice) -> NDArray:
-        """Σ over levels of weight × the bilinearly sampled quantities ``_SAMPLED[columns]``, shape (q, *x.shape)."""
+        """Σ over levels of weight × the bilinearly sampled quantities ``SAMPLED[columns]``, shape (q, *x.shape)."""
         entries, fields = self._level_fields(t)
-        names = _SAMPLED[columns]
+        names = SAMPLED[columns]
         shape = np.shape(x)
         total = np.zeros((len(names), int(np.prod(shape))))
         flat_x, flat_y = np.ravel(x), np.ravel(y)
@@ -289,7 +273,7 @@ class SeaSurface:
                 continue
             grid = self.levels[i].oceans[j].grid
             # one interleaved (N², q) stack, so each corner is one gather of q values
-            stack = np.stack([_field(f, name) for name in names], axis=-1).reshape(-1, len(names))
+            stack = np.stack([sampled_field(f, name) for name in names], axis=-1).reshape(-1, len(names))
             corners, bilinear = bilinear_corners(grid, flat_x[where], flat_y[where])
             part = sum(np.take(stack, c, axis=0) * b[:, None] for c, b in zip(corners, bilinear))
             total[:, where] += (w[where][:, None] * part).T
