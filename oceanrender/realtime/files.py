@@ -182,12 +182,16 @@ def read_reference_xyz(path: str | Path, expected: dict) -> np.ndarray | None:
     return np.stack([channels[c] for c in "XYZ"], axis=-1).astype(np.float64)
 
 
-def write_display_image(exr: Path, png: Path, rgb: np.ndarray, metadata: dict, xyz: np.ndarray | None = None) -> None:
-    """Linear display sRGB as EXR channels R, G, B (with X, Y, Z when given) and an 8-bit sRGB PNG."""
+def write_display_image(exr: Path, png: Path, rgb: np.ndarray, metadata: dict, xyz: np.ndarray | None = None,
+                        display=None) -> None:
+    """Linear sRGB as EXR channels R, G, B (with X, Y, Z when given) and an 8-bit sRGB PNG of ``display(rgb)``.
+
+    ``display`` is Φ's display response (``VisionState.display``); None: the identity.
+    """
     channels = {} if xyz is None else {name: xyz[..., i] for i, name in enumerate("XYZ")}
     channels.update({name: rgb[..., i] for i, name in enumerate("RGB")})
     write_exr(exr, channels, metadata)
-    write_png(png, encode_sRGB_8bit(rgb))
+    write_png(png, encode_sRGB_8bit(rgb if display is None else display(rgb)))
 
 
 def delta_e_preview(delta_E: np.ndarray) -> np.ndarray:
@@ -282,10 +286,13 @@ def write_comparison(folder: str | Path, frame: int, reference_xyz: np.ndarray, 
     meta = {**metadata, "adaptation_luminance_cd_m2": comparison.adaptation_luminance,
             "frame_log_average_cd_m2": comparison.frame_adaptation}
     write_display_image(paths["reference_exr"], paths["reference_png"], comparison.reference_rgb,
-                        {**meta, "channels": "XYZ absolute [cd/m2 for Y]; RGB linear display sRGB after the vision "
-                                             "model (the LUTs' adaptation state)"}, reference_xyz)
+                        {**meta, "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after the vision model's "
+                                             "linear stage (the LUTs' adaptation state); PNG after its display "
+                                             "response"}, reference_xyz, comparison.display)
     write_display_image(paths["realtime_exr"], paths["realtime_png"], comparison.realtime_rgb,
-                        {**meta, "gamma": comparison.gamma, "channels": "RGB linear display sRGB (real-time model)"})
+                        {**meta, "gamma": comparison.gamma,
+                         "channels": "RGB linear sRGB before the display response (real-time model)"},
+                        display=comparison.display)
     write_gbuffer(paths["gbuffer"], gbuffer, meta)
     write_camera_json(paths["camera"], camera, {"scene": metadata.get("scene"), "frame": frame,
                                                 "time_s": metadata.get("time_s")})
@@ -298,7 +305,8 @@ def write_fitted(folder: str | Path, frame: int, before, after, metadata: dict) 
     paths = reference_paths(folder, frame)
     write_display_image(paths["fitted_exr"], paths["fitted_png"], after.realtime_rgb,
                         {**metadata, "gamma": after.gamma,
-                         "channels": "RGB linear display sRGB (real-time model, fitted gamma)"})
+                         "channels": "RGB linear sRGB before the display response (real-time model, fitted gamma)"},
+                        display=after.display)
     write_delta_e(paths["delta_e_exr"], paths["delta_e_png"], {"dE_before": before.delta_E, "dE_after": after.delta_E},
                   before.terms.water, {**metadata, "gamma_before": before.gamma, "gamma_after": after.gamma})
     write_delta_e_png(paths["delta_e_fitted_png"], after.delta_E)

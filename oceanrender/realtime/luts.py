@@ -290,8 +290,19 @@ class VisionState:
     adaptation_luminance: float
 
     def __call__(self, XYZ: ArrayLike) -> NDArray[np.float64]:
-        """Φ(XYZ): absolute XYZ (..., 3) [cd m⁻² for Y] → linear display sRGB (..., 3) [1 = display white]."""
-        return self.vision.apply(XYZ, self.white_XYZ, self.adaptation_luminance).astype(np.float64)
+        """Φ's linear stage: absolute XYZ (..., 3) [cd m⁻² for Y] → linear sRGB before the display response (..., 3).
+
+        For the linear operators (Ward, Ferwerda et al.) that is the display
+        image itself (1 = display white); for the compressive one
+        (Reinhard & Devlin) it is light in units of the semi-saturation, and
+        :meth:`display` (the response) turns a finished sum of light into
+        display values. Either way sums of light stay sums (Eqs. 20–22).
+        """
+        return self.vision.linear(XYZ, self.white_XYZ, self.adaptation_luminance)
+
+    def display(self, rgb_linear: ArrayLike) -> NDArray[np.float64]:
+        """The response that turns a finished linear image into display sRGB [1 = display white]."""
+        return self.vision.response(rgb_linear)
 
     def spectra(self, radiance: ArrayLike, wavelengths: ArrayLike) -> NDArray[np.float64]:
         """Φ of spectral radiance (..., W) [W m⁻² sr⁻¹ nm⁻¹] at ``wavelengths`` [nm] → (..., 3)."""
@@ -300,6 +311,10 @@ class VisionState:
     def describe(self) -> dict[str, object]:
         """JSON-ready description of Φ and its state."""
         return {"brightness_operator": self.vision.brightness,
+                "display_response": ("V = x / (1 + |x|) per channel (Reinhard & Devlin 2005): apply to the "
+                                     "finished linear colour" if self.vision.brightness == "Reinhard Devlin 2005"
+                                     else "identity: the linear colour is the display colour"),
+                "exposure_EV": self.vision.exposure,
                 "chromatic_transform": self.vision.chromatic_transform,
                 "display_luminance_cd_m2": self.vision.display_max_luminance,
                 "adapting_white_XYZ_cd_m2": [float(v) for v in self.white_XYZ],

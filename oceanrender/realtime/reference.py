@@ -11,6 +11,8 @@ returns the per-pixel CIEDE2000 map with its statistics (:mod:`.compare`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -123,7 +125,7 @@ class FrameComparison:
 
     Attributes
     ----------
-    reference_rgb : ndarray (H, W, 3)   Φ(reference XYZ), linear display sRGB.
+    reference_rgb : ndarray (H, W, 3)   Φ's linear stage of the reference XYZ (before the display response).
     terms : RealtimeTerms               The real-time model's per-pixel terms.
     gamma : float                       γ of ``realtime_rgb`` [-].
     realtime_rgb : ndarray (H, W, 3)    The real-time image at γ.
@@ -132,6 +134,7 @@ class FrameComparison:
     all : ErrorStats                    Over every pixel (sky and land included).
     frame_adaptation : float            The frame's own log-average luminance [cd m⁻²] (for the record).
     adaptation_luminance : float        L_wa of Φ used for the reference (the LUTs') [cd m⁻²].
+    display : callable                  Φ's display response (identity for the linear operators).
     """
 
     reference_rgb: NDArray[np.float64]
@@ -143,14 +146,15 @@ class FrameComparison:
     all: ErrorStats
     frame_adaptation: float
     adaptation_luminance: float
+    display: Callable[[NDArray], NDArray] = staticmethod(np.asarray)
 
     def at(self, gamma: float) -> "FrameComparison":
-        """The same comparison for another γ."""
+        """The same comparison for another γ (ΔE between the two images as displayed, after Φ's response)."""
         rgb = self.terms.image(gamma)
-        dE = delta_E_2000(rgb, self.reference_rgb)
+        dE = delta_E_2000(self.display(rgb), self.display(self.reference_rgb))
         return FrameComparison(self.reference_rgb, self.terms, float(gamma), rgb, dE,
                                error_stats(dE, self.terms.water), error_stats(dE), self.frame_adaptation,
-                               self.adaptation_luminance)
+                               self.adaptation_luminance, self.display)
 
 
 def compare_frame(reference_xyz: NDArray, gbuffer: GBuffer, luts: LutSet, phi: VisionState,
@@ -176,14 +180,14 @@ def compare_frame(reference_xyz: NDArray, gbuffer: GBuffer, luts: LutSet, phi: V
     terms = realtime_terms(gbuffer, luts, fresnel)
     own = adaptation_luminance_log_average(np.asarray(reference_xyz)[..., 1])
     base = FrameComparison(reference_rgb, terms, 0.0, reference_rgb, np.zeros(gbuffer.shape), error_stats([]),
-                           error_stats([]), own, phi.adaptation_luminance)
+                           error_stats([]), own, phi.adaptation_luminance, phi.display)
     return base.at(luts.gamma if gamma is None else float(gamma))
 
 
 def reference_noise(renderer: ReferenceRenderer, frame: int, comparison: FrameComparison, phi: VisionState) -> dict:
     """ΔE2000 between the frame's reference and a second render with an independent seed (the path tracer's noise)."""
     second, _ = renderer.render_xyz(frame, seed_offset=NOISE_SEED_OFFSET)
-    dE = delta_E_2000(phi(second), comparison.reference_rgb)
+    dE = delta_E_2000(phi.display(phi(second)), phi.display(comparison.reference_rgb))
     return {"frame": frame, "seed_offset": NOISE_SEED_OFFSET,
             "water": error_stats(dE, comparison.terms.water).describe(), "all": error_stats(dE).describe()}
 

@@ -1,7 +1,8 @@
 """Human-vision operator Φ: absolute CIE XYZ [cd/m²] → display sRGB.
 
 -   :mod:`~oceanrender.vision.brightness`: global brightness adaptation
-    (Ward 1994, Ferwerda et al. 1996) and the log-average adaptation luminance.
+    (Ward 1994, Ferwerda et al. 1996, and the compressive photoreceptor model of
+    Reinhard & Devlin 2005) and the log-average adaptation luminance.
 -   :mod:`~oceanrender.vision.chromatic`: von Kries-type chromatic adaptation
     to the D65 display white (colour-science).
 -   :mod:`~oceanrender.vision.display`: display-relative XYZ → linear sRGB →
@@ -12,8 +13,13 @@
 
 from oceanrender.vision.brightness import (
     BRIGHTNESS_METHODS,
+    BRIGHTNESS_RESPONSES,
     adaptation_luminance_log_average,
+    brightness_response,
     brightness_scale_factor,
+    response_ReinhardDevlin2005,
+    scale_factor_ReinhardDevlin2005,
+    semi_saturation_ReinhardDevlin2005,
     scale_factor_Ferwerda1996,
     scale_factor_Ward1994,
     threshold_photopic_Ferwerda1996,
@@ -35,8 +41,13 @@ from oceanrender.vision.model import VisionModel, XYZ_to_display_sRGB_linear
 
 __all__ = [
     "BRIGHTNESS_METHODS",
+    "BRIGHTNESS_RESPONSES",
     "adaptation_luminance_log_average",
+    "brightness_response",
     "brightness_scale_factor",
+    "response_ReinhardDevlin2005",
+    "scale_factor_ReinhardDevlin2005",
+    "semi_saturation_ReinhardDevlin2005",
     "scale_factor_Ferwerda1996",
     "scale_factor_Ward1994",
     "threshold_photopic_Ferwerda1996",

@@ -10,14 +10,26 @@ the scene stays just visible on the display:
     on Blackwell's threshold-versus-intensity data.
 -   :func:`scale_factor_Ferwerda1996`: the photopic (cone) scale factor of
     Ferwerda, Pattanaik, Shirley and Greenberg.
+-   :func:`semi_saturation_ReinhardDevlin2005` and
+    :func:`response_ReinhardDevlin2005`: Reinhard and Devlin's photoreceptor
+    model, a *compressive* operator: the cone response I/(I + σ) saturates
+    smoothly instead of clipping, with the semi-saturation σ set by the
+    adaptation luminance (global light adaptation).
 -   :data:`BRIGHTNESS_METHODS` and :func:`brightness_scale_factor`: choose one
-    of them by name.
+    of them by name; :data:`BRIGHTNESS_RESPONSES` and
+    :func:`brightness_response`: the pointwise response that follows the
+    linear scale (the identity for Ward and Ferwerda).
 -   :func:`adaptation_luminance_log_average`: the world adaptation luminance
     :math:`L_{wa}` of an image as the log-average of its luminance.
 
-The factor multiplies all three of X, Y and Z, so chromaticity is unchanged:
-only luminance is adapted here; chromatic adaptation lives in
-:mod:`oceanrender.vision.chromatic`.
+Every method is written as a linear scale ``m`` (display units per world
+luminance, the adaptation state) followed by a pointwise response ``r``:
+``display = r(m · L_w / L_d,max)``. For Ward and Ferwerda ``r`` is the
+identity; for Reinhard and Devlin it is the photoreceptor's hyperbola. The
+split keeps the adapted image linear in light up to the last step, which the
+real-time LUTs rely on (sums of light are formed before ``r``). The scale
+multiplies X, Y and Z alike, so chromaticity is unchanged by it; chromatic
+adaptation lives in :mod:`oceanrender.vision.chromatic`.
 
 Both methods take the display adaptation luminance as half the display's
 maximum luminance, :math:`L_{da} = L_{d,max}/2`, as Ward [1] suggests and
@@ -34,6 +46,12 @@ References
 .. [3] E. Reinhard, M. Stark, P. Shirley and J. Ferwerda, "Photographic tone
    reproduction for digital images," ACM Trans. Graph., vol. 21, no. 3,
    pp. 267–276, 2002. doi:10.1145/566654.566575
+.. [4] E. Reinhard and K. Devlin, "Dynamic range reduction inspired by
+   photoreceptor physiology," IEEE Trans. Vis. Comput. Graph., vol. 11,
+   no. 1, pp. 13–24, 2005. doi:10.1109/TVCG.2005.9
+.. [5] K. I. Naka and W. A. H. Rushton, "S-potentials from colour units in the
+   retina of fish (Cyprinidae)," J. Physiol., vol. 185, no. 3, pp. 536–555,
+   1966. doi:10.1113/jphysiol.1966.sp008001
 """
 
 from __future__ import annotations
@@ -48,8 +66,14 @@ __all__ = [
     "threshold_photopic_Ferwerda1996",
     "scale_factor_Ward1994",
     "scale_factor_Ferwerda1996",
+    "semi_saturation_ReinhardDevlin2005",
+    "response_ReinhardDevlin2005",
+    "scale_factor_ReinhardDevlin2005",
+    "response_identity",
     "BRIGHTNESS_METHODS",
+    "BRIGHTNESS_RESPONSES",
     "brightness_scale_factor",
+    "brightness_response",
 ]
 
 
@@ -268,11 +292,153 @@ def scale_factor_Ferwerda1996(
     )  # [1], photopic scale factor m_p
 
 
+def semi_saturation_ReinhardDevlin2005(
+    adaptation_luminance: ArrayLike, intensity: float = 1.0, contrast: float = 1.0
+) -> NDArray[np.float64]:
+    """Semi-saturation σ of the photoreceptor model, :math:`σ(I_a) = (f I_a)^m` [cd/m²].
+
+    Parameters
+    ----------
+    adaptation_luminance : array_like
+        Adaptation luminance :math:`I_a` [cd/m²]; with global light adaptation
+        (Reinhard and Devlin's a = 0) and chromatic adaptation left to the von
+        Kries step (their c = 0) it is the scene's world adaptation luminance
+        :math:`L_{wa}`.
+    intensity : float, optional
+        :math:`f = e^{-f'}` of [1] [-], > 0; 1 (f' = 0) is the paper's default.
+    contrast : float, optional
+        :math:`m` of [1] [-], in (0, 1].
+
+    Returns
+    -------
+    numpy.ndarray
+        σ [cd/m²]: the luminance at which the response is half its maximum.
+
+    Notes
+    -----
+    With m = 1 (the default here) σ = f I_a is proportional to the adaptation
+    luminance: Weber-law light adaptation, and an operator independent of the
+    unit of luminance (scaling the whole scene, its adaptation included,
+    leaves the display image unchanged), which an absolutely calibrated
+    renderer needs. Reinhard and Devlin choose m < 1 from the image's log
+    range, which presumes images in arbitrary relative units and makes m (and
+    so the display) change from frame to frame; it is available but not used
+    by :func:`scale_factor_ReinhardDevlin2005`.
+
+    References
+    ----------
+    .. [1] E. Reinhard and K. Devlin, "Dynamic range reduction inspired by
+       photoreceptor physiology," IEEE Trans. Vis. Comput. Graph. 11(1),
+       13–24, 2005. doi:10.1109/TVCG.2005.9
+    """
+    if not (intensity > 0 and 0 < contrast <= 1):
+        raise ValueError(f"need intensity f > 0 and contrast m in (0, 1], got {intensity!r}, {contrast!r}")
+    I_a = np.asarray(adaptation_luminance, dtype=np.float64)
+
+    return (intensity * I_a) ** contrast  # σ(I_a) = (f I_a)^m, [1]
+
+
+def response_ReinhardDevlin2005(relative_intensity: ArrayLike) -> NDArray[np.float64]:
+    """Photoreceptor response :math:`V = I/(I + σ)` as a function of :math:`x = I/σ` [-].
+
+    .. math:: V(x) = \\frac{x}{1 + |x|}
+
+    Parameters
+    ----------
+    relative_intensity : array_like
+        Stimulus per semi-saturation, :math:`x = I/σ` [-], any shape.
+
+    Returns
+    -------
+    numpy.ndarray
+        Response :math:`V/V_{max}` in (−1, 1) [-]: display-relative, 1 is the
+        display's white, reached only as x → ∞ (no clipping).
+
+    Notes
+    -----
+    -   For x ≥ 0 this is the Naka–Rushton hyperbola with exponent 1 [2], the
+        photoreceptor model of [1]; x = 1 (the adaptation luminance) gives one
+        half, the display adaptation luminance :math:`L_{d,max}/2` that Ward
+        and Ferwerda et al. map the world adaptation luminance to as well.
+    -   Negative x (colours outside the display gamut, after the matrix to
+        sRGB) are mapped by the odd extension −V(−x), so the response is
+        continuous, monotone and bounded for every finite input; [1] has
+        no negative intensities.
+    -   NaN stays NaN; ±inf gives ±1.
+
+    References
+    ----------
+    .. [1] E. Reinhard and K. Devlin, IEEE Trans. Vis. Comput. Graph. 11(1),
+       13–24, 2005. doi:10.1109/TVCG.2005.9
+    .. [2] K. I. Naka and W. A. H. Rushton, J. Physiol. 185(3), 536–555, 1966.
+       doi:10.1113/jphysiol.1966.sp008001
+
+    Examples
+    --------
+    >>> response_ReinhardDevlin2005([0.0, 1.0, 3.0]).tolist()
+    [0.0, 0.5, 0.75]
+    """
+    x = np.asarray(relative_intensity, dtype=np.float64)
+    with np.errstate(invalid="ignore"):
+        V = np.where(np.isinf(x), np.sign(x), x / (1.0 + np.abs(x)))  # V = I/(I + σ), [1], [2]
+
+    return V
+
+
+def scale_factor_ReinhardDevlin2005(
+    adaptation_luminance: ArrayLike, display_max_luminance: float = 100.0
+) -> NDArray[np.float64]:
+    """Linear stage of Reinhard and Devlin's operator as a scale factor :math:`m = L_{d,max}/σ`.
+
+    Parameters
+    ----------
+    adaptation_luminance : array_like
+        World adaptation luminance :math:`L_{wa}` [cd/m²].
+    display_max_luminance : float, optional
+        Maximum luminance of the display :math:`L_{d,max}` [cd/m²].
+
+    Returns
+    -------
+    numpy.ndarray
+        m [dimensionless]: ``m · L_w / L_d,max = L_w / σ`` is the
+        :func:`response_ReinhardDevlin2005` input, with σ =
+        :func:`semi_saturation_ReinhardDevlin2005` at f =
+        :data:`INTENSITY_GREY_CARD` and m = 1: σ ≈ 4.56 L_wa.
+
+    Notes
+    -----
+    f is chosen so that the world adaptation luminance (the scene's
+    log-average) is displayed as an 18 % grey, V(L_wa) = 0.18: the
+    calibration of reflected-light exposure meters (ISO 2720) and the key
+    value of Reinhard et al. 2002. It is Reinhard and Devlin's user
+    parameter f' = −ln f = −1.52, inside their range [−8, 8]; an exposure
+    compensation of k EV divides σ by 2^k.
+    """
+    return display_max_luminance / semi_saturation_ReinhardDevlin2005(adaptation_luminance, INTENSITY_GREY_CARD)
+
+
+#: Reinhard and Devlin's intensity parameter f for which V(L_wa) = 0.18: (1 − 0.18)/0.18 [-].
+INTENSITY_GREY_CARD = (1.0 - 0.18) / 0.18
+
+
+def response_identity(relative_intensity: ArrayLike) -> NDArray[np.float64]:
+    """The response of the linear operators (Ward, Ferwerda et al.): display = input [-]."""
+    return np.asarray(relative_intensity, dtype=np.float64)
+
+
 BRIGHTNESS_METHODS: dict[str, Callable[..., NDArray[np.float64]]] = {
     "Ward 1994": scale_factor_Ward1994,
     "Ferwerda 1996": scale_factor_Ferwerda1996,
+    "Reinhard Devlin 2005": scale_factor_ReinhardDevlin2005,
 }
-"""Global brightness-adaptation scale factors, by published method name."""
+"""Global brightness-adaptation scale factors (the linear stage), by published method name."""
+
+BRIGHTNESS_RESPONSES: dict[str, Callable[[ArrayLike], NDArray[np.float64]]] = {
+    "Ward 1994": response_identity,
+    "Ferwerda 1996": response_identity,
+    "Reinhard Devlin 2005": response_ReinhardDevlin2005,
+}
+"""Pointwise display response after the linear stage, by method name (same keys as the methods)."""
 
 
 def brightness_scale_factor(
@@ -309,3 +475,20 @@ def brightness_scale_factor(
         )
 
     return BRIGHTNESS_METHODS[method](adaptation_luminance, display_max_luminance)
+
+
+def brightness_response(method: str, relative_intensity: ArrayLike) -> NDArray[np.float64]:
+    """The named method's pointwise response [-] (display-relative, 1 = display white).
+
+    Raises
+    ------
+    ValueError
+        If ``method`` is not a known name; the message lists the known names.
+    """
+    if method not in BRIGHTNESS_RESPONSES:
+        raise ValueError(
+            f"unknown brightness method {method!r}; known methods: "
+            f"{', '.join(repr(name) for name in BRIGHTNESS_RESPONSES)}"
+        )
+
+    return BRIGHTNESS_RESPONSES[method](relative_intensity)

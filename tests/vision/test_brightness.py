@@ -8,7 +8,12 @@ import pytest
 from oceanrender.vision.brightness import (
     BRIGHTNESS_METHODS,
     adaptation_luminance_log_average,
+    BRIGHTNESS_RESPONSES,
+    brightness_response,
     brightness_scale_factor,
+    response_ReinhardDevlin2005,
+    scale_factor_ReinhardDevlin2005,
+    semi_saturation_ReinhardDevlin2005,
     scale_factor_Ferwerda1996,
     scale_factor_Ward1994,
     threshold_photopic_Ferwerda1996,
@@ -145,9 +150,12 @@ def test_brightness_scale_factor_dispatch(method):
 
 
 def test_brightness_methods_names():
-    assert set(BRIGHTNESS_METHODS) == {"Ward 1994", "Ferwerda 1996"}
+    assert set(BRIGHTNESS_METHODS) == {"Ward 1994", "Ferwerda 1996", "Reinhard Devlin 2005"}
+    assert set(BRIGHTNESS_RESPONSES) == set(BRIGHTNESS_METHODS)
     assert BRIGHTNESS_METHODS["Ward 1994"] is scale_factor_Ward1994
     assert BRIGHTNESS_METHODS["Ferwerda 1996"] is scale_factor_Ferwerda1996
+    assert BRIGHTNESS_METHODS["Reinhard Devlin 2005"] is scale_factor_ReinhardDevlin2005
+    assert BRIGHTNESS_RESPONSES["Reinhard Devlin 2005"] is response_ReinhardDevlin2005
 
 
 def test_brightness_scale_factor_unknown_method():
@@ -155,6 +163,59 @@ def test_brightness_scale_factor_unknown_method():
         brightness_scale_factor("Reinhard 2002", 100.0, 100.0)
     assert "Ferwerda 1996" in str(info.value)
     assert "Reinhard 2002" in str(info.value)
+
+
+def test_brightness_response_unknown_method():
+    with pytest.raises(ValueError, match="Reinhard Devlin 2005"):
+        brightness_response("Reinhard 2002", [1.0])
+
+
+# ------------------------------------------------ Reinhard & Devlin 2005
+
+
+def test_ReinhardDevlin2005_response_half_at_semi_saturation():
+    # V = I/(I + σ): 0 at I = 0, 1/2 at I = σ, 3/4 at 3σ, 1/(1 + 1/x) in general.
+    x = np.array([0.0, 1.0, 3.0, 0.01, 1e6])
+    np.testing.assert_allclose(response_ReinhardDevlin2005(x), x / (1.0 + x), rtol=ROUNDOFF)
+    assert response_ReinhardDevlin2005(1.0) == pytest.approx(0.5, rel=ROUNDOFF)
+
+
+def test_ReinhardDevlin2005_response_bounded_monotone_odd():
+    x = np.concatenate([-np.logspace(8, -8, 200), [0.0], np.logspace(-8, 8, 200)])
+    V = response_ReinhardDevlin2005(x)
+    assert np.all(np.abs(V) < 1.0) and np.all(np.diff(V) > 0)
+    np.testing.assert_array_equal(response_ReinhardDevlin2005(-x), -V)
+    # It never reaches display white: V < 1 for any finite input; 8-bit 255 needs V > 254.5/255 in sRGB,
+    # i.e. linear V > 0.9955, which takes x > 220.
+    assert response_ReinhardDevlin2005(220.0) < 0.9955 < response_ReinhardDevlin2005(222.0)
+
+
+def test_ReinhardDevlin2005_response_non_finite():
+    V = response_ReinhardDevlin2005([np.nan, np.inf, -np.inf])
+    assert np.isnan(V[0]) and V[1] == 1.0 and V[2] == -1.0
+
+
+def test_ReinhardDevlin2005_semi_saturation():
+    # σ = (f I_a)^m
+    assert semi_saturation_ReinhardDevlin2005(200.0) == pytest.approx(200.0, rel=ROUNDOFF)
+    assert semi_saturation_ReinhardDevlin2005(200.0, 2.0, 0.5) == pytest.approx(20.0, rel=ROUNDOFF)
+    for f, m in [(0.0, 1.0), (1.0, 0.0), (1.0, 1.5)]:
+        with pytest.raises(ValueError):
+            semi_saturation_ReinhardDevlin2005(200.0, f, m)
+
+
+@pytest.mark.parametrize("L_wa", [1.0, 150.0, 4000.0, 3e5])
+def test_ReinhardDevlin2005_adaptation_luminance_displays_as_18_percent_grey(L_wa):
+    m = scale_factor_ReinhardDevlin2005(L_wa, 100.0)
+    assert response_ReinhardDevlin2005(m * L_wa / 100.0) == pytest.approx(0.18, rel=ROUNDOFF)
+
+
+def test_ReinhardDevlin2005_independent_of_luminance_unit():
+    # Scaling the scene and its adaptation luminance together leaves the display unchanged (m = 1).
+    L = np.logspace(0, 5, 11)
+    for k in (1e-3, 7.0, 1e4):
+        np.testing.assert_allclose(scale_factor_ReinhardDevlin2005(k * 300.0) * k * L,
+                                   scale_factor_ReinhardDevlin2005(300.0) * L, rtol=ROUNDOFF)
 
 
 # ---------------------------------------------------------- log-average

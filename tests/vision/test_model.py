@@ -12,9 +12,10 @@ from oceanrender.vision import (
     VisionModel,
     XYZ_to_display_sRGB_linear,
     XYZ_white_D65,
+    brightness_response,
     brightness_scale_factor,
 )
-from tests.tolerances import ROUNDOFF32
+from tests.tolerances import ROUNDOFF, ROUNDOFF32
 
 RTOL = ROUNDOFF32  # float32 output
 
@@ -30,14 +31,18 @@ def test_neutral_grey_under_illuminant_A_is_neutral(brightness, transform):
     RGB = model.apply(grey, XYZ_A_5000, L_wa)
     assert RGB.dtype == np.float32
     np.testing.assert_allclose(RGB, RGB[1], rtol=RTOL)
-    # Level: display Y = m · 900 / 100, and D65 at Y maps to RGB = Y.
+    # Level: display Y = r(m · 900 / 100) (r: the method's response), and D65 at Y maps to RGB = Y.
     m = brightness_scale_factor(brightness, L_wa, 100.0)
-    np.testing.assert_allclose(RGB, m * 9.0, rtol=RTOL)
+    np.testing.assert_allclose(RGB, brightness_response(brightness, m * 9.0), rtol=RTOL)
+
+
+def test_default_is_the_compressive_operator():
+    assert VisionModel().brightness == "Reinhard Devlin 2005"
 
 
 def test_D65_white_at_display_adaptation_is_display_white():
     # Ward's m = 1 when L_wa = L_da = 50 cd/m²; 100 cd/m² D65 is then the display's white.
-    model = VisionModel()
+    model = VisionModel("Ward 1994")
     RGB = model.apply(XYZ_white_D65(100.0), XYZ_white_D65(1.0), 50.0)
     np.testing.assert_allclose(RGB, [1.0, 1.0, 1.0], rtol=RTOL)
 
@@ -45,7 +50,7 @@ def test_D65_white_at_display_adaptation_is_display_white():
 def test_chromatic_adaptation_changes_colour():
     # The same stimulus looks bluer when the eye is adapted to a warmer white.
     stimulus = XYZ_white_D65(500.0)
-    model = VisionModel()
+    model = VisionModel("Ward 1994")
     under_D65 = model.apply(stimulus, XYZ_white_D65(1.0), 500.0)
     under_A = model.apply(stimulus, XYZ_A_5000, 500.0)
     np.testing.assert_allclose(under_D65, under_D65[0], rtol=RTOL)
@@ -70,8 +75,54 @@ def test_broadcasting_image_and_pixel(rng):
     )
 
 
-def test_linear_in_XYZ(rng):
+@pytest.mark.parametrize("brightness", list(BRIGHTNESS_METHODS))
+def test_chromatic_adaptation_changes_colour_any_operator(brightness):
+    stimulus = XYZ_white_D65(500.0)
+    under_A = VisionModel(brightness).apply(stimulus, XYZ_A_5000, 500.0)
+    assert under_A[2] > under_A[1] > under_A[0]
+
+
+def test_linear_stage_is_linear_for_every_operator(rng):
+    XYZ = rng.uniform(0.0, 4000.0, size=(3, 3))
+    for brightness in BRIGHTNESS_METHODS:
+        model = VisionModel(brightness)
+        once = 2.0 * model.linear(XYZ, XYZ_A_5000, 900.0)
+        np.testing.assert_allclose(model.linear(2.0 * XYZ, XYZ_A_5000, 900.0), once, rtol=0,
+                                   atol=ROUNDOFF * np.abs(once).max())
+        # apply = response(linear), in float32.
+        np.testing.assert_allclose(model.apply(XYZ, XYZ_A_5000, 900.0), model.response(once / 2.0),
+                                   rtol=0, atol=ROUNDOFF32)
+
+
+def test_compressive_operator_never_reaches_white(rng):
+    # Luminances from 10⁻² to 10⁸ × the adaptation luminance (sky to sun disc): all channels < 1,
+    # order of luminance kept, and the adaptation luminance's D65 grey displayed as 18 %.
     model = VisionModel()
+    Y = np.logspace(0, 10, 101)
+    linear = model.linear(XYZ_white_D65(1.0)[None, :] * Y[:, None], XYZ_white_D65(1.0), 100.0)
+    RGB = model.response(linear)  # float64: the float32 output rounds to 1 only above ~10⁷ σ
+    assert np.all(RGB < 1.0) and np.all(np.diff(RGB[:, 1]) > 0)
+    np.testing.assert_allclose(model.apply(XYZ_white_D65(100.0), XYZ_white_D65(1.0), 100.0), 0.18, rtol=RTOL)
+
+
+@pytest.mark.parametrize("brightness", list(BRIGHTNESS_METHODS))
+def test_exposure_doubles_linear_stage(brightness):
+    XYZ = XYZ_white_D65(321.0)
+    plain = VisionModel(brightness).linear(XYZ, XYZ_A_5000, 900.0)
+    np.testing.assert_allclose(VisionModel(brightness, exposure=1.0).linear(XYZ, XYZ_A_5000, 900.0), 2.0 * plain,
+                               rtol=ROUNDOFF)
+    np.testing.assert_allclose(VisionModel(brightness, exposure=-2.5).linear(XYZ, XYZ_A_5000, 900.0),
+                               2.0**-2.5 * plain, rtol=ROUNDOFF)
+
+
+@pytest.mark.parametrize("value", [11.0, -10.5, float("nan"), float("inf"), "1"])
+def test_invalid_exposure(value):
+    with pytest.raises(ValueError, match="exposure"):
+        VisionModel(exposure=value)
+
+
+def test_linear_in_XYZ(rng):
+    model = VisionModel("Ward 1994")
     XYZ = rng.uniform(0.0, 4000.0, size=(3, 3))
     once = 2.0 * model.apply(XYZ, XYZ_A_5000, 900.0)
     # float32 output; channels of random XYZ can be near 0 after the matrices: relative to the scale.
