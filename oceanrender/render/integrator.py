@@ -18,6 +18,12 @@ continued with a ``volpath`` one bounce shorter. The expectation is
 F L_r + (1 − F) L_t, the same as ``volpath``'s lobe-selected estimate, so the
 image converges to the same value with less noise per sample.
 
+In JIT variants both lobes are continued by
+:func:`oceanrender.render.underwater.trace_path` (hero-wavelength spectral MIS in
+the water, Wilkie et al. 2014; in-water sun sampling when a sun is given), also
+where a reflected ray re-enters the water; scalar variants continue them with
+``volpath``.
+
 Call :func:`register` once a variant is active, then use
 :func:`split_integrator` as the scene's ``"integrator"`` entry.
 
@@ -57,9 +63,9 @@ def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: flo
     ----------
     max_depth : int          Longest path, as in ``volpath`` (−1: unbounded) [-].
     rr_depth : int           Depth after which Russian roulette starts, as in ``volpath`` [-].
-    sun : sequence, optional Unit vector towards the sun (z up). Given, the transmitted lobe is
-                             traced by :func:`oceanrender.render.underwater.trace_in_water`, which
-                             samples the sunlight refracted into the water explicitly.
+    sun : sequence, optional Unit vector towards the sun (z up). Given, the paths in the water
+                             sample the sunlight refracted into it explicitly
+                             (:func:`oceanrender.render.underwater.trace_path`).
     water_ior : float        Refractive index of the water relative to air [-].
     sun_lobe_alpha : float   Beckmann roughness of the refracted-sun lobe: the total rms slope
                              of the sea surface [-].
@@ -154,21 +160,23 @@ def _define_class() -> type:
 
         Notes
         -----
-        Path depths match ``volpath``: the continuations are ``volpath``
-        instances with ``max_depth − 1`` and ``rr_depth − 1``. At the split
+        Path depths match ``volpath``: the continuations have ``max_depth − 1``
+        and ``rr_depth − 1`` (JIT variants: :func:`~oceanrender.render.underwater.trace_path`;
+        scalar variants: ``volpath`` instances). At the split
         vertex, next-event estimation uses the reflection lobe only and is
         combined by the power heuristic with sampling of that lobe (densities of
         the whole reflection strategy, which for a ``blendbsdf`` is the mixture
         of its components); the
-        emission the reflected ray reaches first is added here with that MIS
-        weight, so its continuation runs with ``hide_emitters``. Emitters
+        emission the reflected ray reaches first is weighted against it (in
+        ``trace_path``; in scalar variants here, the ``volpath`` continuation then
+        runs with ``hide_emitters``). Emitters
         are unreachable straight through the transmission lobe by NEE (a
         dielectric blocks shadow rays in ``volpath`` too), so the transmitted
         continuation counts what it meets first with full weight.
 
         The split is only used where this bookkeeping is exact: the camera
-        is in vacuum, the split shapes have no exterior medium and no shape
-        has a ``null`` BSDF. Otherwise, and on camera rays that miss or hit
+        is in vacuum, the split shapes have no exterior medium and a homogeneous
+        interior medium (or none), and no shape has a ``null`` BSDF. Otherwise, and on camera rays that miss or hit
         other surfaces, the whole sample is ``volpath``'s.
         """
 
@@ -243,9 +251,13 @@ def _define_class() -> type:
             props["hide_emitters"] = bool(hide_emitters)
             return mi.PluginManager.instance().create_object(props)
 
-        def _in_water(self, scene, sampler, ray, medium, active, bsdfs):
-            """Radiance of a transmitted ray in ``medium``: in-water sun sampling, then volpath outside."""
-            from .underwater import escaped_radiance, trace_in_water  # noqa: PLC0415
+        def _continue(self, scene, sampler, ray, medium, active, bsdfs, last=None):
+            """Radiance of a ray leaving the split vertex into ``medium`` (null: air), to its path's end.
+
+            Traced by :func:`oceanrender.render.underwater.trace_path` (hero-wavelength spectral
+            MIS in the water, in-water sun sampling when the integrator has a sun), not by volpath.
+            """
+            from .underwater import trace_path  # noqa: PLC0415
 
             def is_water_surface(ptr):
                 on = mi.Bool(False)
@@ -254,15 +266,23 @@ def _define_class() -> type:
                 return on
 
             depth = 1 << 20 if self.max_depth < 0 else self.max_depth - 1
-            L, escape = trace_in_water(scene, sampler, mi.Ray3f(ray), medium, active,
-                                       is_water_surface=is_water_surface, sun=self.sun, eta=self.water_ior,
-                                       alpha=self.sun_lobe_alpha, max_depth=depth,
-                                       rr_depth=max(self.rr_depth - 1, 1))
-            L += escaped_radiance(scene, sampler, self.reflected, escape)
-            if self.clamps:
-                # NOTE: a stated, biased firefly clamp (scene setting render.in_water_clamp).
-                L = dr.minimum(L, self.in_water_clamp)
-            return dr.select(active, L, 0.0)
+            sun = {} if self.sun is None else {"eta": self.water_ior, "alpha": self.sun_lobe_alpha}
+            return trace_path(scene, sampler, mi.Ray3f(ray), medium, active, is_water_surface=is_water_surface,
+                              sun=self.sun, max_depth=depth, rr_depth=max(self.rr_depth - 1, 1), last=last, **sun)
+
+        def _reflected_scalar(self, scene, sampler, si, bsdf, ctx_r, bs_r, ray_r):
+            """Scalar variants: the reflected ray's first emitter hit (MIS against the NEE) + volpath after it."""
+            si_r = scene.ray_intersect(ray_r)
+            delta_r = mi.has_flag(bs_r.sampled_type, mi.BSDFFlags.Delta)
+            ds_r = mi.DirectionSample3f(scene, si_r, si)
+            # NOTE: scalar variants ignore masks and would dereference a null emitter.
+            pdf_em = scene.pdf_emitter_direction(si, ds_r) if not delta_r and ds_r.emitter is not None else 0.0
+            pdf_r_strategy = 0.0 if delta_r else bsdf.pdf(ctx_r, si, bs_r.wo)
+            w_r_hit = 1.0 if delta_r else power_heuristic(pdf_r_strategy, pdf_em)
+            L_r = eval_emitter(si_r.emitter(scene), si_r, True) * w_r_hit
+            if si_r.is_valid():
+                L_r += self.reflected.sample(scene, sampler, mi.RayDifferential3f(ray_r), None, True)[0]
+            return L_r
 
         def to_string(self):
             return f"SplitSurfaceIntegrator[max_depth={self.max_depth}, rr_depth={self.rr_depth}]"
@@ -288,16 +308,18 @@ def _define_class() -> type:
                 if not any(bsdf is b for b in bsdfs):
                     bsdfs.append(bsdf)
                 interior = shape.interior_medium()
+                if interior is not None and not interior.is_homogeneous():
+                    return None  # trace_path samples free flights and connections in closed form
                 if not any(interior is m for m in media):
                     media.append(interior)
             return (bsdfs, media) if bsdfs else None
 
         def sample(self, scene, sampler, ray, medium=None, active=True):
-            full, reflected, transmitted = self.full, self.reflected, self.transmitted
+            full, transmitted = self.full, self.transmitted
             setup = self.split_setup(scene, medium) if self.splits else None
             if setup is None:
                 return full.sample(scene, sampler, ray, medium, active)
-            bsdfs, media = setup
+            bsdfs, _ = setup
 
             # ---- The camera ray's first hit: split only on the dielectric BSDFs.
             si = scene.ray_intersect(mi.Ray3f(ray), active)
@@ -334,25 +356,20 @@ def _define_class() -> type:
             bs_r, weight_r = bsdf.sample(ctx_r, si, sampler.next_1d(split), sampler.next_2d(split), split)
             act_r = split & (bs_r.pdf > 0) & dr.any(weight_r != 0.0)
             ray_r = si.spawn_ray(si.to_world(bs_r.wo))
-            si_r = scene.ray_intersect(ray_r, act_r)
-            # The first emission on the reflected ray (the sky, mostly), MIS-weighted
-            # against the NEE above; its volpath continuation hides it.
-            delta_r = mi.has_flag(bs_r.sampled_type, mi.BSDFFlags.Delta)
-            glossy_r = act_r & logical_not(delta_r)
-            ds_r = mi.DirectionSample3f(scene, si_r, si)
             if jit:
-                pdf_em = scene.pdf_emitter_direction(si, ds_r, glossy_r)
+                # The reflected path (its first emitter hit, the sky mostly, MIS-weighted against
+                # the NEE above) is traced in this package, so that the water it may re-enter
+                # (another wave) is sampled with hero-wavelength MIS, not on volpath's first
+                # wavelength alone.
+                delta_r = mi.has_flag(bs_r.sampled_type, mi.BSDFFlags.Delta)
+                # NOTE: the density of the whole reflection strategy, not bs_r.pdf: for a
+                # ``blendbsdf`` that is the chosen component's alone, and the two MIS weights
+                # would then not add up to one (volpath has that bias on blends).
+                pdf_r_strategy = dr.select(delta_r, bs_r.pdf, bsdf.pdf(ctx_r, si, bs_r.wo, act_r & ~delta_r))
+                L_r = self._continue(scene, sampler, ray_r, mi.MediumPtr(None), act_r, bsdfs,
+                                     last=(si, pdf_r_strategy, delta_r))
             else:
-                # NOTE: scalar variants ignore the mask and would dereference a null emitter.
-                pdf_em = scene.pdf_emitter_direction(si, ds_r) if glossy_r and ds_r.emitter is not None else 0.0
-            # NOTE: the density of the whole reflection strategy, not bs_r.pdf: for a
-            # ``blendbsdf`` that is the chosen component's alone, and the two MIS weights
-            # would then not add up to one (volpath has that bias on blends).
-            pdf_r_strategy = bsdf.pdf(ctx_r, si, bs_r.wo, glossy_r)
-            w_r_hit = dr.select(delta_r, 1.0, power_heuristic(pdf_r_strategy, pdf_em))
-            L_r = eval_emitter(si_r.emitter(scene, act_r), si_r, act_r) * w_r_hit
-            act_r_inner = act_r & si_r.is_valid()
-            L_r += reflected.sample(scene, sampler, mi.RayDifferential3f(ray_r), None, act_r_inner)[0]
+                L_r = self._reflected_scalar(scene, sampler, si, bsdf, ctx_r, bs_r, ray_r) if act_r else 0.0
             result += dr.select(act_r, weight_r * L_r, 0.0)
 
             # ---- Transmission lobe: continue in the medium behind the surface.
@@ -361,18 +378,13 @@ def _define_class() -> type:
             act_t = split & (bs_t.pdf > 0) & dr.any(weight_t != 0.0)
             ray_t = mi.RayDifferential3f(si.spawn_ray(si.to_world(bs_t.wo)))
             target = si.target_medium(ray_t.d)
-            L_t = mi.Spectrum(0.0)
             if jit:
-                # NOTE: sample() takes one scalar Medium for all lanes, so the
-                # lanes are grouped by the medium they enter.
-                for m in media:
-                    enters = act_t & same_object(target, m, mi.MediumPtr)
-                    if m is not None and self.sun is not None:
-                        L_t += self._in_water(scene, sampler, ray_t, m, enters, bsdfs)
-                    else:
-                        L_t += dr.select(enters, transmitted.sample(scene, sampler, ray_t, m, enters)[0], 0.0)
-            elif act_t:
-                L_t = transmitted.sample(scene, sampler, ray_t, target, act_t)[0]
+                L_t = self._continue(scene, sampler, ray_t, target, act_t, bsdfs)
+            else:
+                L_t = transmitted.sample(scene, sampler, ray_t, target, act_t)[0] if act_t else mi.Spectrum(0.0)
+            if self.clamps:
+                # NOTE: a stated, biased firefly clamp (scene setting render.in_water_clamp).
+                L_t = dr.minimum(L_t, self.in_water_clamp)
             result += dr.select(act_t, weight_t * L_t, 0.0)
 
             return dr.select(split, result, full_L), split | full_valid, []

@@ -31,6 +31,20 @@ The weights add up to one for every path, so the estimator is unbiased
 whatever q is; q only decides how much variance is left. The distance x → y
 enters B as the exact transmittance exp(−σ_t |xy|) (homogeneous medium).
 
+Sea water's extinction varies ~50-fold over the visible (0.01 m⁻¹ in the violet,
+0.6 m⁻¹ at 700 nm), so the sampling of free-flight distances decides the colour
+noise. :func:`trace_path` samples every flight of a path on one *hero* channel,
+chosen uniformly per path, and weights every term the path adds by the one-sample
+balance heuristic over all of its wavelengths' path densities (Wilkie et al.
+2014 [4]; Veach 1997 [5], §9.2.4). The path tracer before it weighted each flight
+by the mean of the channels' densities of that flight alone while Mitsuba
+sampled every flight on channel 0 (``sample_interaction`` ignores its channel
+argument in spectral variants; checked directly): for paths of more than one flight that is
+biased (mean of products ≠ product of means: +5 % luminance, +20 % Z for a
+deep medium whose σ_t rises from 1 to 8 m⁻¹ over the spectrum) and its weights
+grow like C^k with the number k of flights: the violet fireflies of issue 15
+(docs/fireflies.md).
+
 References
 ----------
 .. [1] B. Walter, S. R. Marschner, H. Li and K. E. Torrance, "Microfacet models
@@ -43,6 +57,9 @@ References
 .. [4] A. Wilkie, S. Nawaz, M. Droske, A. Weidlich and J. Hanika, "Hero wavelength
    spectral sampling," Computer Graphics Forum 33(4), 123–131, 2014,
    doi:10.1111/cgf.12419 — one-sample MIS over the wavelengths of a path.
+.. [5] E. Veach, "Robust Monte Carlo methods for light transport simulation,"
+   PhD thesis, Stanford University, 1997 — §9.2.4, the one-sample MIS model and
+   its balance heuristic.
 .. [3] C. Cox and W. Munk, "Measurement of the roughness of the sea surface from
    photographs of the sun's glitter," J. Opt. Soc. Am. 44(11), 838–850, 1954,
    doi:10.1364/JOSA.44.000838 — total mean-square slope 0.003 + 5.12e-3 U₁₂.₅.
@@ -137,59 +154,125 @@ def _power_heuristic3(a, b, c):
     return dr.select(total > 0, a2 / dr.select(total > 0, total, 1.0), 0.0)
 
 
-def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun, eta: float, alpha: float,
-                   max_depth: int, rr_depth: int):
-    """Radiance along ``ray``, which starts inside the water ``medium``, until it leaves the water.
+def hero_free_flight_update(weight, pdf_ratio, value, pdf):
+    """One free flight of a hero-wavelength path: the new (W, S) of :func:`trace_path`.
 
-    A path tracer for the inside of the water body with the three strategies
-    for emitters seen through the surface (see the module docstring). It
-    follows the path through the medium (free-flight sampling with spectral
-    MIS over the path's wavelengths [4]), off opaque surfaces
-    in the water (the seafloor) and off the underside of the water surface;
-    where the path refracts out into the air it stops, and
-    :func:`escaped_radiance` adds the rest.
+    One-sample MIS over the path's C wavelengths with the balance heuristic [4, 5]:
+    the path's distances are all sampled on one hero channel h, chosen uniformly per
+    path, so the density of the whole path under technique j is p_j(x̄) = Πₖ πⱼ(tₖ), and
+    the estimator of channel i is f_i(x̄) / ((1/C) Σ_j p_j(x̄)) (Eq. 6 of [4]). It is
+    carried as ``weight`` W_i = f_i / p̄ and ``pdf_ratio`` S_j = p_j / p̄ (p̄ the mean of
+    the p_j, so mean S = 1 and no product over- or underflows):
+
+        p̄' = p̄ · mean_j(S_j π_j),   W_i' = W_i g_i / mean_j(S_j π_j),   S_j' = S_j π_j / mean_j(S_j π_j).
+
+    Parameters
+    ----------
+    weight, pdf_ratio : mitsuba.Spectrum   W and S before the flight [-].
+    value : mitsuba.Spectrum               g_i: the flight's transmittance per channel [-].
+    pdf : mitsuba.Spectrum                 π_j: the density of the flight's outcome (distance
+                                           [m⁻¹], or passing probability [-]) had channel j sampled it.
+
+    Returns
+    -------
+    tuple   (W', S'); zero weight where every channel's density vanishes.
+
+    Notes
+    -----
+    W_i ≤ C f_i / p_i for every channel i: each channel is weighted at most C times as
+    strongly as if it had been the one sampled. Per segment (a fresh channel per free
+    flight, the scheme this replaced) the bound is C per flight, C^k for a path of k flights;
+    sampling on one fixed channel (Mitsuba's ``volpath``: tr / pdf₀) has no bound at all,
+    and infinite variance in channels with σ_t,i < σ_t,0 / 2.
+    """
+    import drjit as dr  # noqa: PLC0415
+
+    mixture = dr.mean(pdf_ratio * pdf)  # mean_j(S_j π_j): Eq. 6 of [4], the balance heuristic of [5]
+    ok = mixture > 0
+    inverse = dr.select(ok, 1.0 / dr.select(ok, mixture, 1.0), 0.0)
+    return weight * value * inverse, dr.select(ok, pdf_ratio * pdf * inverse, pdf_ratio)
+
+
+def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, eta: float = 1.333,
+               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None):
+    """Radiance along ``ray`` [W m⁻² sr⁻¹ nm⁻¹], in air or in the water, to the end of its path.
+
+    A path tracer for a scene of vacuum and homogeneous media inside dielectric
+    surfaces (the sea under a sky), with
+
+    * **hero-wavelength spectral MIS** (Wilkie et al. 2014 [4]): every free flight of
+      a path is sampled on one hero channel chosen uniformly per path, and every
+      term the path adds (emitter hits, next-event estimation, the connections B
+      and D) is weighted by the one-sample balance heuristic over all of its
+      wavelengths (:func:`hero_free_flight_update`), so no single wavelength can
+      carry more than C = 4 times its own unidirectional weight;
+    * in the water, the strategies for sunlight seen through the surface (module
+      docstring): B (the refracted-sun lobe q, if ``sun`` is given), D (the exact
+      transmittance along the path's own next direction) and emitter sampling
+      through the underside, combined with BSDF sampling (C) by the power heuristic;
+    * in air, ``volpath``'s estimator: emitter sampling at every surface with a
+      non-delta lobe, BSDF sampling, emitter hits weighted by the power heuristic.
+      A path that leaves the water stays in this loop (air), and one that
+      re-enters it (another wave) is traced in the water again with the same
+      hero channel.
 
     Parameters
     ----------
     scene, sampler : mitsuba.Scene, mitsuba.Sampler
-    ray : mitsuba.Ray3f                   Starting inside the water [m].
-    medium : mitsuba.Medium               The homogeneous water medium (σ in m⁻¹).
+    ray : mitsuba.Ray3f                   The path's first segment [m].
+    medium : mitsuba.MediumPtr            Medium the ray starts in, per lane (null: air).
     active : mitsuba.Bool                 Lanes to trace.
     is_water_surface : callable           ``BSDFPtr -> Bool``: the BSDF is the air–water surface's.
-    sun : mitsuba.Vector3f or 3 floats    Unit vector towards the sun (z up); pass an opaque
-                                          ``Vector3f`` to change it between renders without recompiling.
+    sun : mitsuba.Vector3f, 3 floats or None   Unit vector towards the sun (z up) for strategy B;
+                                          None: no B. An opaque ``Vector3f`` changes between renders
+                                          without recompiling.
     eta : float                           Refractive index of water relative to air [-].
     alpha : float                         Beckmann roughness α_q of the refracted-sun lobe [-].
-    max_depth, rr_depth : int             Vertices allowed in the water; Russian roulette after ``rr_depth``.
+    max_depth, rr_depth : int             Vertices allowed; Russian roulette after ``rr_depth``.
+    last : tuple, optional                ``(interaction, pdf, delta)`` of the vertex the ray left:
+                                          its BSDF-sampling density [sr⁻¹] and whether that was a
+                                          delta lobe, for the MIS weight of an emitter the first
+                                          segment meets in air (against emitter sampling there).
+                                          None: the ray comes from a delta lobe (weight 1).
 
     Returns
     -------
-    tuple
-        ``(L, escape)``: the radiance gathered in the water [W m⁻² sr⁻¹ nm⁻¹]
-        and the escaping rays, a tuple for :func:`escaped_radiance`.
+    mitsuba.Spectrum   Radiance per wavelength [W m⁻² sr⁻¹ nm⁻¹], zero on inactive lanes.
     """
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 
     sample_lobe, pdf_lobe = sun_lobe_functions()
-    # NOTE: Python floats become literals in the traced kernel; an (opaque) Vector3f is used as is.
-    sun_v = sun if isinstance(sun, mi.Vector3f) else mi.Vector3f(*[float(c) for c in sun])
+    sun_sampling = sun is not None
+    if sun_sampling:
+        # NOTE: Python floats become literals in the traced kernel; an (opaque) Vector3f is used as is.
+        sun_v = sun if isinstance(sun, mi.Vector3f) else mi.Vector3f(*[float(c) for c in sun])
     ctx = mi.BSDFContext()
-    phase = medium.phase_function()
     n_channels = dr.size_v(mi.Spectrum)
+    no_medium = mi.MediumPtr(None)
+    active = mi.Bool(active)
+    # The hero channel, uniform per path [4]: the one-sample MIS below is then Veach's
+    # one-sample model with equal selection probabilities, whatever the sensor's joint
+    # distribution of the C wavelengths.
+    hero = mi.UInt32(dr.minimum(sampler.next_1d(active) * n_channels, n_channels - 1))
+    if last is None:
+        last_it, last_pdf, last_delta = dr.zeros(mi.Interaction3f), mi.Float(0.0), mi.Bool(True)
+    else:
+        last_it, last_pdf, last_delta = dr.zeros(mi.Interaction3f), mi.Float(last[1]), mi.Bool(last[2])
+        last_it[active] = last[0]
 
     def through_surface(si, bsdf, sampler, on):
-        """Emitter sampling at a point of the water surface, through its BSDF.
+        """Emitter sampling at a surface point, through its BSDF.
 
         Returns (f·L_e/p_e [W m⁻² sr⁻¹ nm⁻¹ per unit throughput], p_e, p_s, valid): the
         emitter-sampling and BSDF-sampling densities of the sampled direction (p_s = 0 for
-        a delta emitter), for the MIS weights of strategies A, B and D.
+        a delta emitter), for the MIS weights.
         """
         ds, em = scene.sample_emitter_direction(si, sampler.next_2d(on), True, on)
         f_y, p_s = bsdf.eval_pdf(ctx, si, si.to_local(ds.d), on)
         return f_y * em, ds.pdf, dr.select(ds.delta, 0.0, p_s), on & (ds.pdf > 0)
 
-    def sun_strategy(vertex, f_and_pdf, beta, sigma_t, sampler, on):
+    def sun_strategy(vertex, f_and_pdf, weight, sigma_t, sampler, on):
         """Strategy B at an in-water vertex: d ~ q, trace to the surface, emitter sampling there."""
         d, q = sample_lobe(sampler.next_2d(on), sun_v, eta, alpha)
         on &= q > 0
@@ -198,136 +281,137 @@ def trace_in_water(scene, sampler, ray, medium, active, *, is_water_surface, sun
         si_b = scene.ray_intersect(ray_b, on)
         bsdf_b = si_b.bsdf(ray_b)
         on &= si_b.is_valid() & is_water_surface(bsdf_b)
+        # NOTE: the connection's length is evaluated, not sampled: it adds nothing to the
+        # path's wavelength densities, so the weight W of the vertex applies as it is.
         transmittance = dr.exp(-sigma_t * si_b.t)
         light, p_e, p_s, valid = through_surface(si_b, bsdf_b, sampler, on)
         w = _power_heuristic3(q * p_e, p_x * p_e, p_x * p_s)
-        contribution = beta * f_x * transmittance * light * (w / dr.select(q > 0, q, 1.0))
+        contribution = weight * f_x * transmittance * light * (w / dr.select(q > 0, q, 1.0))
         return dr.select(valid, contribution, 0.0)
 
-    def cond(sampler, ray, beta, L, depth, active, prev_r, prev_in_water, *escape):
+    def cond(sampler, ray, W, S, L, depth, active, *rest):
         return active
 
-    def body(sampler, ray, beta, L, depth, active, prev_r, prev_in_water, esc, esc_ray, esc_beta, esc_p, esc_r,
-             esc_delta, esc_it):
+    def body(sampler, ray, W, S, L, depth, active, medium, prev_r, prev_in_water, last_it, last_pdf, last_delta,
+             last_r):
         # ---- Russian roulette on the throughput after rr_depth vertices (as volpath).
-        q_rr = dr.minimum(dr.max(beta), 0.99)
+        q_rr = dr.minimum(dr.max(W), 0.99)
         roulette = active & (depth >= rr_depth)
         active &= ~roulette | (sampler.next_1d(active) < q_rr)
-        beta = dr.select(roulette, beta / dr.select(q_rr > 0, q_rr, 1.0), beta)
+        W = dr.select(roulette, W / dr.select(q_rr > 0, q_rr, 1.0), W)
 
-        # ---- Free flight to the next scattering event or surface.
-        # NOTE: the distance is sampled on one of the path's wavelengths chosen at random per
-        # segment, and weighted by the mean of the densities of all of them (the one-sample
-        # balance heuristic over wavelengths, "hero wavelength" spectral MIS, Wilkie et al.
-        # 2014). volpath samples on the first wavelength only: where σ_t(λ) varies several-fold
-        # (turbid water) its weights tr/pdf₀ explode into coloured speckle.
+        in_water = active & (medium != no_medium)
+        in_air = active & (medium == no_medium)
         si = scene.ray_intersect(ray, active)
-        channel = mi.UInt32(dr.minimum(sampler.next_1d(active) * n_channels, n_channels - 1))
-        mei = medium.sample_interaction(ray, sampler.next_1d(active), channel, active)
+        bsdf = si.bsdf(ray)
+        water_bsdf = is_water_surface(bsdf)
+        smooth = mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth)
+
+        # ---- In air: the emitter the segment meets (the sky where it misses), weighted by the
+        # power heuristic against emitter sampling at the vertex it left (A) and, for a path
+        # that left the water, against B at the in-water vertex before that (C's weight).
+        emitter = si.emitter(scene, in_air)
+        hit_emitter = in_air & (emitter != mi.EmitterPtr(None))
+        ds = mi.DirectionSample3f(scene, si, last_it)
+        p_e = scene.pdf_emitter_direction(last_it, ds, hit_emitter & ~last_delta)
+        w_c = dr.select(last_delta, 1.0, _power_heuristic3(last_pdf, p_e, last_r * p_e))
+        L += dr.select(hit_emitter, W * emitter.eval(si, hit_emitter) * w_c, 0.0)
+
+        # ---- In the water: free flight on the hero channel.
+        # NOTE: Mitsuba 3.9.1's sample_interaction ignores its channel argument in spectral
+        # variants (only RGB variants pick a channel) and always samples on the first
+        # wavelength: checked, the mean distance is 1/σ_t(λ₀) for channel 0 and 3 alike. The
+        # medium is homogeneous, so the distance is drawn here on the hero's σ_t instead.
+        u_flight = sampler.next_1d(in_water)
+        mei = medium.sample_interaction(ray, u_flight, 0, in_water)
         sigma_t = mei.sigma_t
-        scattered = active & mei.is_valid() & (mei.t < si.t)
+        sigma_hero = sigma_t[0]
+        for c in range(1, n_channels):
+            sigma_hero = dr.select(hero == c, sigma_t[c], sigma_hero)
+        t_hero = mei.mint - dr.log(1.0 - u_flight) / dr.select(sigma_hero > 0, sigma_hero, 1.0)
+        mei.t = dr.select(in_water & (sigma_hero > 0), t_hero, dr.inf)
+        mei.p = ray(mei.t)
+        scattered = in_water & mei.is_valid() & (mei.t < si.t)
         mei.t = dr.select(scattered, mei.t, dr.inf)
         # Strategy D: the direction sampled at the previous in-water vertex, followed to the
-        # surface with its exact transmittance, and emitter sampling there.
-        bsdf = si.bsdf(ray)
-        on_surface = active & si.is_valid() & is_water_surface(bsdf)
-        connect = on_surface & prev_in_water & mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth)
+        # surface with its exact transmittance, and emitter sampling there (W before this
+        # flight: the connection does not sample the distance).
+        on_surface = in_water & si.is_valid() & water_bsdf
+        connect = on_surface & prev_in_water & smooth
         light, p_e, p_s, valid = through_surface(si, bsdf, sampler, connect)
         w_d = _power_heuristic3(p_e, prev_r * p_e, p_s)
-        L += dr.select(valid, beta * dr.exp(-sigma_t * si.t) * light * w_d, 0.0)
+        L += dr.select(valid, W * dr.exp(-sigma_t * si.t) * light * w_d, 0.0)
 
-        tr, free_pdf = medium.transmittance_eval_pdf(mei, si, active)
-        pdf_mean = dr.mean(free_pdf)
-        beta = dr.select(active, beta * dr.select(pdf_mean > 0, tr / dr.select(pdf_mean > 0, pdf_mean, 1.0), 0.0),
-                         beta)
+        tr, free_pdf = medium.transmittance_eval_pdf(mei, si, in_water)
+        W_f, S_f = hero_free_flight_update(W, S, tr, free_pdf)
+        W, S = dr.select(in_water, W_f, W), dr.select(in_water, S_f, S)
         depth = dr.select(active, depth + 1, depth)
 
         # ---- Medium scattering: strategy B, then phase-function sampling.
         scatter = scattered & (depth < max_depth)
         phase_ctx = mi.PhaseFunctionContext(sampler)
-        beta_s = beta * mei.sigma_s
+        phase = medium.phase_function()
+        W_s = W * mei.sigma_s
 
         def phase_f_pdf(d, on):
             value, pdf = phase.eval_pdf(phase_ctx, mei, d, on)
             return mi.Spectrum(value), pdf
 
-        L += sun_strategy(mei, phase_f_pdf, beta_s, sigma_t, sampler, scatter)
+        if sun_sampling:
+            L += sun_strategy(mei, phase_f_pdf, W_s, sigma_t, sampler, scatter)
         wo, phase_w, phase_pdf = phase.sample(phase_ctx, mei, sampler.next_1d(scatter), sampler.next_2d(scatter),
                                               scatter)
-        r_phase = pdf_lobe(wo, sun_v, eta, alpha) / dr.select(phase_pdf > 0, phase_pdf, 1.0)
+        r_phase = pdf_lobe(wo, sun_v, eta, alpha) / dr.select(phase_pdf > 0, phase_pdf, 1.0) if sun_sampling else 0.0
 
-        # ---- Surfaces: the water surface from below, or an opaque surface in the water.
+        # ---- Surfaces: the water surface (from either side), opaque surfaces in the water or in air.
         surface = active & ~scattered & si.is_valid() & (depth < max_depth)
-        water = surface & is_water_surface(bsdf)
-        opaque = surface & ~water
+        opaque_in_water = surface & in_water & ~water_bsdf
 
         def bsdf_f_pdf(d, on):
             return bsdf.eval_pdf(ctx, si, si.to_local(d), on)
 
-        L += sun_strategy(si, bsdf_f_pdf, beta, sigma_t, sampler, opaque)
+        if sun_sampling:
+            L += sun_strategy(si, bsdf_f_pdf, W, sigma_t, sampler, opaque_in_water)
 
-        # Emitter sampling through the underside of the water surface: only for paths that
-        # come from outside the water or off its underside (from an in-water vertex, D did it).
-        nee = water & mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth) & ~prev_in_water
+        # Emitter sampling at surfaces with a non-delta lobe: in air (as volpath), and through
+        # the underside of the water surface for paths that did not come from an in-water vertex
+        # (from one, D did it). prev_r = 0 unless the previous vertex was in the water.
+        nee = surface & smooth & (in_air | (water_bsdf & ~prev_in_water))
         light, p_e, p_s, valid = through_surface(si, bsdf, sampler, nee)
         w_a = _power_heuristic3(p_e, prev_r * p_e, p_s)
-        L += dr.select(valid, beta * light * w_a, 0.0)
+        L += dr.select(valid, W * light * w_a, 0.0)
 
         # BSDF sampling at surfaces.
-        sample_surface = water | opaque
-        bs, bsdf_w = bsdf.sample(ctx, si, sampler.next_1d(sample_surface), sampler.next_2d(sample_surface),
-                                 sample_surface)
-        sample_surface &= (bs.pdf > 0) & dr.any(bsdf_w != 0.0)
+        bs, bsdf_w = bsdf.sample(ctx, si, sampler.next_1d(surface), sampler.next_2d(surface), surface)
+        sample_surface = surface & (bs.pdf > 0) & dr.any(bsdf_w != 0.0)
         wo_s = si.to_world(bs.wo)
         delta = mi.has_flag(bs.sampled_type, mi.BSDFFlags.Delta)
-        leaves = sample_surface & water & (si.target_medium(wo_s) != mi.MediumPtr(medium))
-        r_surface = dr.select(opaque & ~delta,
-                              pdf_lobe(wo_s, sun_v, eta, alpha) / dr.select(bs.pdf > 0, bs.pdf, 1.0), 0.0)
+        # NOTE: the density of the whole BSDF (a ``blendbsdf``'s mixture), not bs.pdf, which
+        # is the chosen component's: the MIS weights of emitter hits and of A/D must add up to one.
+        pdf_s = dr.select(delta, bs.pdf, bsdf.pdf(ctx, si, bs.wo, sample_surface & ~delta))
+        r_surface = pdf_lobe(wo_s, sun_v, eta, alpha) / dr.select(pdf_s > 0, pdf_s, 1.0) if sun_sampling else 0.0
+        transmits = sample_surface & mi.has_flag(bs.sampled_type, mi.BSDFFlags.Transmission)
 
-        # ---- Escapes: keep the ray and what the MIS weight of its emitter hit needs.
-        esc |= leaves
-        esc_ray[leaves] = si.spawn_ray(wo_s)
-        esc_beta[leaves] = beta * bsdf_w
-        esc_p[leaves] = bs.pdf
-        esc_r[leaves] = prev_r
-        esc_delta[leaves] = delta
-        esc_it[leaves] = si
+        # What an emitter hit on the next segment (in air) needs for its MIS weight.
+        last_it[sample_surface] = si
+        last_pdf = dr.select(sample_surface, pdf_s, last_pdf)
+        last_delta = dr.select(sample_surface, delta, last_delta)
+        last_r = dr.select(sample_surface, prev_r, last_r)
 
         # ---- Next segment.
         ray[scatter] = mei.spawn_ray(wo)
-        ray[sample_surface & ~leaves] = si.spawn_ray(wo_s)
-        beta = dr.select(scatter, beta_s * phase_w, dr.select(sample_surface, beta * bsdf_w, beta))
-        prev_r = dr.select(scatter, r_phase, dr.select(sample_surface, r_surface, prev_r))
-        prev_in_water = scatter | (sample_surface & opaque)
-        active = (scatter & (phase_pdf > 0)) | (sample_surface & ~leaves)
-        active &= dr.any(beta != 0.0)
-        return (sampler, ray, beta, L, depth, active, prev_r, prev_in_water, esc, esc_ray, esc_beta, esc_p, esc_r,
-                esc_delta, esc_it)
+        ray[sample_surface] = si.spawn_ray(wo_s)
+        medium = dr.select(transmits, si.target_medium(wo_s), medium)
+        W = dr.select(scatter, W_s * phase_w, dr.select(sample_surface, W * bsdf_w, W))
+        prev_r = dr.select(scatter, r_phase,
+                           dr.select(sample_surface, dr.select(opaque_in_water & ~delta, r_surface, 0.0), prev_r))
+        prev_in_water = scatter | (sample_surface & opaque_in_water)
+        active = (scatter & (phase_pdf > 0)) | sample_surface
+        active &= dr.any(W != 0.0)
+        return (sampler, ray, W, S, L, depth, active, medium, prev_r, prev_in_water, last_it, last_pdf, last_delta,
+                last_r)
 
-    state = (sampler, mi.Ray3f(ray), mi.Spectrum(1.0), mi.Spectrum(0.0), mi.UInt32(0), mi.Bool(active),
-             mi.Float(0.0), mi.Bool(False), mi.Bool(False), dr.zeros(mi.Ray3f), mi.Spectrum(0.0), mi.Float(0.0), mi.Float(0.0),
-             mi.Bool(False), dr.zeros(mi.Interaction3f))
-    state = dr.while_loop(state, cond, body, label="oceanrender_in_water")
-    return state[3], state[8:]
-
-
-def escaped_radiance(scene, sampler, continuation, escape):
-    """Radiance brought back by the rays that left the water (see :func:`trace_in_water`).
-
-    Adds the first emitter a ray meets, weighted by the power heuristic of
-    strategy C against A and B, and continues it with ``continuation`` (a
-    ``volpath`` with ``hide_emitters``, so that emission is not counted twice)
-    [W m⁻² sr⁻¹ nm⁻¹].
-    """
-    import drjit as dr  # noqa: PLC0415
-    import mitsuba as mi  # noqa: PLC0415
-
-    esc, ray, beta, p_s, r, delta, it = escape
-    si = scene.ray_intersect(ray, esc)
-    ds = mi.DirectionSample3f(scene, si, it)
-    glossy = esc & ~delta
-    p_e = scene.pdf_emitter_direction(it, ds, glossy)
-    w = dr.select(delta, 1.0, _power_heuristic3(p_s, p_e, r * p_e))
-    L = si.emitter(scene, esc).eval(si, esc) * w
-    L += continuation.sample(scene, sampler, mi.RayDifferential3f(ray), None, esc & si.is_valid())[0]
-    return dr.select(esc, beta * L, 0.0)
+    state = (sampler, mi.Ray3f(ray), mi.Spectrum(1.0), mi.Spectrum(1.0), mi.Spectrum(0.0), mi.UInt32(0), active,
+             mi.MediumPtr(medium), mi.Float(0.0), mi.Bool(False), last_it, last_pdf, last_delta, mi.Float(0.0))
+    state = dr.while_loop(state, cond, body, label="oceanrender_hero_path")
+    return dr.select(active, state[4], 0.0)
