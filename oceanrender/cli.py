@@ -53,6 +53,8 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--out", type=Path, metavar="DIR", help="output root (default: the scene's, 'outputs')")
     render.add_argument("--variant", metavar="V", help="Mitsuba variant: 'auto' or e.g. llvm_ad_spectral")
     render.add_argument("--denoise", action="store_true", help="denoise each frame (Intel Open Image Denoise)")
+    render.add_argument("--exposure", type=float, metavar="EV",
+                        help="exposure compensation in EV, -10..10 (default: the scene's [vision] exposure)")
     where = render.add_mutually_exclusive_group()
     where.add_argument("--workers", type=int, metavar="N",
                        help="render frames on a local Dask cluster of N worker processes")
@@ -155,7 +157,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
-    """Apply --frames/--spp/--resolution/--out/--variant, validated like the file."""
+    """Apply --frames/--spp/--resolution/--out/--variant/--denoise/--exposure, validated like the file."""
     output = {}
     if args.frames is not None:
         output["frames"] = args.frames
@@ -168,7 +170,8 @@ def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
     render = {"variant": args.variant} if args.variant else {}
     if getattr(args, "denoise", False):
         render["denoise"] = True
-    return with_overrides(scene, "command line", output=output, render=render)
+    vision = {"exposure": args.exposure} if getattr(args, "exposure", None) is not None else {}
+    return with_overrides(scene, "command line", output=output, render=render, vision=vision)
 
 
 def check_resources(scene: Scene, source: str) -> None:

@@ -24,9 +24,10 @@ from .surface.frame import FrameGeometry
 from .vision.brightness import adaptation_luminance_log_average
 from .vision.display import encode_sRGB_8bit
 from .vision.model import VisionModel
+from .vision.temporal import adaptation_window, adapted_luminance
 
 #: Stages timed per frame, in order.
-STAGES = ("geometry", "update", "render", "denoise", "vision", "write")
+STAGES = ("meter", "geometry", "update", "render", "denoise", "vision", "write")
 
 
 @dataclass(frozen=True)
@@ -56,7 +57,27 @@ def vision_for_scene(scene: Scene) -> VisionModel:
     """The vision model Φ configured by the scene's ``[vision]`` section."""
     v = scene.vision
     return VisionModel(brightness=v.brightness, chromatic_transform=v.chromatic_transform,
-                       display_max_luminance=v.display_luminance)
+                       display_max_luminance=v.display_luminance, exposure=v.exposure)
+
+
+#: Samples per pixel of the adaptation meter's render of a frame [-] (see :meth:`Sequence.meter`).
+METER_SPP = 2
+
+#: The meter averages its render over blocks of this many pixels on a side before the log-average [-]:
+#: 2 spp × 16 pixels = 32 samples per block, so the log of a noisy block (Jensen) is within ~1 % of the
+#: log of its mean, and the eye's adaptation pools over a region, not a single receptor, anyway.
+METER_BLOCK = 4
+
+#: Added to a frame's seed for its meter render, so meter and frame use independent samples [-].
+METER_SEED_OFFSET = 1 << 30
+
+
+def block_mean(image: np.ndarray, block: int) -> np.ndarray:
+    """Mean over ``block`` × ``block`` pixel blocks of an (H, W) image (edge rows/columns that do not fill a block dropped)."""
+    h, w = (image.shape[0] // block) * block, (image.shape[1] // block) * block
+    if h == 0 or w == 0:
+        return image
+    return image[:h, :w].reshape(h // block, block, w // block, block).mean(axis=(1, 3))
 
 
 #: Reflectance of the grey card of ``adaptation_luminance = "daylight"`` [-]: the mid-grey to which
@@ -151,6 +172,7 @@ class Sequence:
                                             sun_lobe_alpha=self.sun_lobe_alpha, terrain=self.body.terrain(),
                                             spp=self.spp, resolution=self.resolution)
         self.vision = vision_for_scene(scene)
+        self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
 
     def _measure_white(self, frame: int) -> None:
         """The adapting white [cd m⁻²] under the sun of ``frame`` (:attr:`sun_angles`), measured once per frame."""
@@ -180,6 +202,43 @@ class Sequence:
             if self.in_water_clamp > 0:
                 self.renderer.set_in_water_clamp(self.in_water_clamp)
 
+    @property
+    def follows_adaptation(self) -> bool:
+        """Whether the adaptation luminance follows the view over time (``'frame'`` with ``adaptation_time`` > 0)."""
+        vision = self.scene.vision
+        return vision.adaptation_luminance == "frame" and vision.adaptation_time > 0
+
+    def meter(self, frame: int) -> float:
+        """Log-average luminance of ``frame``'s view [cd m⁻²], from a quick render of its own (cached).
+
+        A :data:`METER_SPP`-spp render of the frame (own seed), averaged over
+        :data:`METER_BLOCK`² pixel blocks, then log-averaged. It depends on the
+        frame number alone, so every process computes the same value.
+        """
+        if frame not in self._meters:
+            geometry = self.geometry(frame)
+            self.point(frame)
+            self.renderer.update_water(geometry)
+            xyz, _ = self.renderer.render_xyz(METER_SPP, seed=self.scene.render.seed + frame + METER_SEED_OFFSET)
+            self._meters[frame] = adaptation_luminance_log_average(block_mean(xyz[..., 1], METER_BLOCK))
+            self._loaded = (frame, geometry)
+        return self._meters[frame]
+
+    def followed_adaptation(self, frame: int) -> tuple[float, float]:
+        """(adaptation luminance, its target) of ``frame`` [cd m⁻²] as the eye follows the view over time.
+
+        The target is :meth:`meter` of the frame; the state is the
+        exponential filter of :mod:`oceanrender.vision.temporal` run over the
+        frames of :func:`~oceanrender.vision.temporal.adaptation_window` (at
+        most 4 τ back, starting adapted), so it is a function of the frame
+        number alone: frames stay independent, resumed runs identical.
+        """
+        vision, fps = self.scene.vision, self.scene.output.fps
+        window = adaptation_window(frame, vision.adaptation_time, fps)
+        # NOTE: the frame itself last, so its geometry is the one left loaded for its render.
+        targets = {m: self.meter(m) for m in [*window[:-1], frame]}
+        return adapted_luminance([targets[m] for m in window], 1.0 / fps, vision.adaptation_time), targets[frame]
+
     def time_of(self, frame: int) -> float:
         """Frame time t = frame / fps [s]."""
         return frame / self.scene.output.fps
@@ -188,7 +247,8 @@ class Sequence:
         """The water body of a frame: vertex positions [m], normals, foam."""
         return self.body.frame(self.time_of(frame))
 
-    def metadata(self, frame: int, repaired: int, adaptation: float) -> dict[str, object]:
+    def metadata(self, frame: int, repaired: int, adaptation: float,
+                 adaptation_target: float | None = None) -> dict[str, object]:
         import colour  # noqa: PLC0415
         import mitsuba  # noqa: PLC0415
 
@@ -203,7 +263,9 @@ class Sequence:
             "colour_version": colour.__version__,
             "white_XYZ_cd_m2": " ".join(f"{v:.6g}" for v in self.white_xyz),
             "adaptation_luminance_cd_m2": adaptation,
+            "adaptation": self._adaptation_label(adaptation_target),
             "brightness_operator": self.vision.brightness,
+            "exposure_EV": self.vision.exposure,
             "chromatic_transform": self.vision.chromatic_transform,
             "display_luminance_cd_m2": self.vision.display_max_luminance,
             "surface_roughness_beckmann_alpha": self.roughness,
@@ -221,6 +283,18 @@ class Sequence:
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
+
+    def _adaptation_label(self, target: float | None) -> str:
+        """How the adaptation luminance was set."""
+        value = self.scene.vision.adaptation_luminance
+        if target is not None:
+            return (f"followed over time (tau = {self.scene.vision.adaptation_time:g} s) towards the meter's "
+                    f"log-average {target:.6g} cd/m2 ({METER_SPP} spp, {METER_BLOCK}x{METER_BLOCK} blocks)")
+        if value == "frame":
+            return "this frame's log-average luminance"
+        if value == "daylight":
+            return "18 % grey card under the sun and sky"
+        return "fixed by the scene"
 
     def _roughness_label(self) -> str:
         """How the surface BSDF's α is set: one value, or per vertex with its range."""
@@ -245,6 +319,11 @@ class Sequence:
         """
         own = {stage: 0.0 for stage in STAGES}
         tic = time.perf_counter()
+        target = None
+        if self.follows_adaptation:
+            adaptation, target = self.followed_adaptation(frame)
+            own["meter"] += time.perf_counter() - tic
+            tic = time.perf_counter()
         if self._loaded is not None and self._loaded[0] == frame:
             geometry = self._loaded[1]
         else:
@@ -265,9 +344,10 @@ class Sequence:
             xyz = denoise_XYZ(xyz)
             tic, tac = tac, time.perf_counter()
             own["denoise"] += tac - tic
-        adaptation = adaptation_luminance(self.scene, xyz, self.white_xyz)
+        if target is None:
+            adaptation = adaptation_luminance(self.scene, xyz, self.white_xyz)
         rgb = self.vision.apply(xyz, self.white_xyz, adaptation)
-        metadata = self.metadata(frame, repaired, adaptation)
+        metadata = self.metadata(frame, repaired, adaptation, target)
         spectral = None
         if self.renderer.bands and self.renderer.last_bands is not None:
             spectral = spectral_frame(self.renderer.last_bands, metadata)
@@ -386,8 +466,21 @@ def simulate_coastal(scene: Scene, out_dir: str | Path, todo: list[int], report:
     from .coastal.simulation import run_simulation  # noqa: PLC0415
 
     store = coastal_store(out_dir).resolve()
-    report.simulation = run_simulation(scene, store, (todo[0], todo[-1] + 1))
+    report.simulation = run_simulation(scene, store, (first_needed_frame(scene, todo[0]), todo[-1] + 1))
     return store
+
+
+def first_needed_frame(scene: Scene, first: int) -> int:
+    """The earliest frame whose state a render of frames from ``first`` on needs [-].
+
+    With the eye's adaptation followed over time a frame meters the frames of its
+    adaptation window (:func:`~oceanrender.vision.temporal.adaptation_window`), so a
+    coastal simulation must store those too.
+    """
+    vision = scene.vision
+    if vision.adaptation_luminance == "frame" and vision.adaptation_time > 0:
+        return adaptation_window(first, vision.adaptation_time, scene.output.fps).start
+    return first
 
 
 def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tuple[int, int] | None = None,

@@ -250,3 +250,43 @@ def test_spectral_bands_integrate_a_constant_sky_and_are_written(variant, tmp_pa
     assert meta["band_edges_nm"].split()[0] == "360.000"
     # Sunsky has no light above 720 nm; the blue-green bands of a daylight sea are lit.
     assert channels["477.5-595.0nm"].mean() > 10 * channels["712.5-830.0nm"].mean() >= 0
+
+
+def test_followed_adaptation_depends_on_the_frame_alone(variant):
+    # The eye's state at frame 3 (τ = 0.05 s at 24 fps: a window of frames 0-3) from a run that rendered
+    # frames 0-2 first equals that of a fresh run starting at frame 3 (a resumed run, or another Dask
+    # worker), and is the filter of the meters of its window.
+    from oceanrender.vision.temporal import adaptation_window, adapted_luminance
+
+    scene = tiny_scene(vision={"adaptation_time": 0.05}, output={"frames": [0, 4]})
+    run = Sequence(scene, variant)
+    frames = [run.compute_frame(f) for f in range(4)]
+    resumed = Sequence(scene, variant, first_frame=3)
+    again = resumed.compute_frame(3)
+    assert list(adaptation_window(3, 0.05, 24.0)) == [0, 1, 2, 3]
+    expected = adapted_luminance([run.meter(f) for f in range(4)], 1 / 24, 0.05)
+    # Meters are renders on several threads: equal to float32 round-off of the film, not bit for bit.
+    assert frames[3].metadata["adaptation_luminance_cd_m2"] == pytest.approx(expected, rel=ROUNDOFF32)
+    assert again.metadata["adaptation_luminance_cd_m2"] == pytest.approx(expected, rel=ROUNDOFF32)
+    np.testing.assert_allclose(again.channels["R"], frames[3].channels["R"], rtol=1e-5, atol=1e-6)
+    # The meter estimates the log-average over 4×4-pixel blocks of the frame itself (2 spp against the
+    # frame's 4): within 10 %, the noise of 24 blocks of 32 samples. (Per pixel, this tiny noisy frame's
+    # log-average is 60× lower: black 4-spp pixels weigh ln δ; on the 320×180 default frame the two agree
+    # within 1.3 %.)
+    from oceanrender.pipeline import METER_BLOCK, block_mean
+    from oceanrender.vision.brightness import adaptation_luminance_log_average
+
+    own = adaptation_luminance_log_average(block_mean(frames[3].channels["Y"].astype(np.float64), METER_BLOCK))
+    assert run.meter(3) == pytest.approx(own, rel=0.1)
+    assert "followed over time" in frames[3].metadata["adaptation"]
+
+
+def test_zero_adaptation_time_adapts_each_frame_to_itself(variant):
+    from oceanrender.vision.brightness import adaptation_luminance_log_average
+
+    scene = tiny_scene(vision={"adaptation_time": 0.0})
+    frame = Sequence(scene, variant).compute_frame(0)
+    own = adaptation_luminance_log_average(frame.channels["Y"])
+    assert frame.metadata["adaptation_luminance_cd_m2"] == pytest.approx(own, rel=ROUNDOFF32)
+    assert frame.metadata["adaptation"] == "this frame's log-average luminance"
+    assert frame.seconds["meter"] == 0.0

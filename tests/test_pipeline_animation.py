@@ -76,12 +76,16 @@ def test_radial_grid_follows_the_camera_and_matches_a_still_camera_at_each_key(m
 def test_frame_at_a_keyframe_equals_a_still_render_at_that_key(variant):
     from oceanrender.pipeline import Sequence
 
-    animated = tiny_scene(camera={"keys": CAMERA_KEYS}, sun={"keys": SUN_KEYS}, render={"in_water_clamp": 20.0})
+    # NOTE: adaptation_time = 0, each frame adapted to itself: with the eye's time course frame 2's
+    # display would (rightly) depend on what the camera saw at frames 0 and 1.
+    animated = tiny_scene(camera={"keys": CAMERA_KEYS}, sun={"keys": SUN_KEYS}, render={"in_water_clamp": 20.0},
+                          vision={"adaptation_time": 0.0})
     moving = Sequence(animated, variant)
     # Frame 0 first so that frame 2 comes after a frame at another pose (state must not leak).
     moving.compute_frame(0)
     frame = moving.compute_frame(2)
-    still = Sequence(still_at(CAMERA_KEYS[1], SUN_KEYS[1], render={"in_water_clamp": 20.0}), variant, first_frame=2)
+    still = Sequence(still_at(CAMERA_KEYS[1], SUN_KEYS[1], render={"in_water_clamp": 20.0},
+                              vision={"adaptation_time": 0.0}), variant, first_frame=2)
     reference = still.compute_frame(2)
     # Bit for bit: the integrator's sun is opaque in both scenes and the sensor's pose a parameter,
     # so both run the same kernels on the same samples (same seed); the radial grid is not used here,

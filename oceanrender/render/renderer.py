@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..optics.foam import foam_spectral_factor_Frouin1996
 from ..optics.seafloor import linear_reflectance
 from ..optics.water import MediumOptics, WaterIOPs
 from ..scene import Scene
@@ -67,7 +68,8 @@ def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
     return np.where(bad[..., None], fill, image), count
 
 
-#: Name of the per-vertex foam coverage attribute on the water mesh.
+#: Name of the per-vertex foam attribute of the water mesh: the fraction of the surface that reflects like
+#: fresh foam [-] (``FrameGeometry.foam``; the fresh-foam coverage B of the open sea, the white water of the coast).
 FOAM_ATTRIBUTE = "vertex_foam"
 
 
@@ -154,18 +156,38 @@ def update_water_parameters(params, geometry: FrameGeometry) -> None:
     params.update()
 
 
-def foamy_surface_bsdf(surface: dict, albedo: float) -> dict:
-    """Blend of the water surface and a white diffuse foam layer, weighted per vertex by foam coverage.
+def foam_reflectance_spectrum(albedo: float) -> dict:
+    """Fresh foam's reflectance [-] as an ``irregular`` spectrum over the film's range.
 
-    NOTE: foam is modelled as an opaque Lambertian patch of reflectance
-    ``albedo`` covering a fraction (the coverage) of the surface: the classic
-    linear coverage model of whitecaps (Koepke 1984; Frouin et al. 1996).
+    ``albedo`` in the visible (Whitlock et al. 1982: 0.55) times the decrease
+    towards the near infrared of Frouin et al. (1996)
+    (:func:`~oceanrender.optics.foam.foam_spectral_factor_Frouin1996`).
+    """
+    wavelengths = np.array([FILM_RANGE_NM[0], 555.0, 700.0, FILM_RANGE_NM[1]])
+    return irregular_spectrum(wavelengths, float(albedo) * foam_spectral_factor_Frouin1996(wavelengths))
+
+
+def foamy_surface_bsdf(surface: dict, albedo: float) -> dict:
+    """The water surface with a Lambertian layer of fresh foam on the fraction ``vertex_foam`` of it.
+
+    ``vertex_foam`` (per vertex, interpolated over each triangle by a
+    ``mesh_attribute`` texture) is the fresh-foam coverage B of
+    :meth:`oceanrender.surface.open_sea.WaterBody.vertex_foam`: a whitecap of
+    coverage F and age a reflects like fresh foam on the fraction
+    F e^{−a/τ_f} of its area, the exponential decay of a whitecap's
+    reflectance (Koepke 1984), and like water on the rest. ``albedo`` is
+    fresh foam's visible reflectance [-] (:func:`foam_reflectance_spectrum`).
+
+    NOTE: the linear coverage model of whitecaps (Koepke 1984; Frouin et al.
+    1996): an opaque Lambertian layer over part of the surface, the water
+    (its ``surface`` BSDF) over the rest; the foam's own bubbles' light
+    into the water below it is left out.
     """
     return {
         "type": "blendbsdf",
         "weight": {"type": "mesh_attribute", "name": FOAM_ATTRIBUTE},
         "bsdf_0": surface,
-        "bsdf_1": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": float(albedo)}},
+        "bsdf_1": {"type": "diffuse", "reflectance": foam_reflectance_spectrum(albedo)},
     }
 
 

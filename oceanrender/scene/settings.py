@@ -12,6 +12,8 @@ file (converted where used), wind in m s⁻¹, luminance in cd m⁻².
 
 from __future__ import annotations
 
+import math
+
 import tomllib
 from pathlib import Path
 from typing import Annotated, Literal
@@ -165,14 +167,48 @@ class MeshSettings(_Section):
 
 
 class FoamSettings(_Section):
-    """Foam from folding of the surface (Jacobian J < threshold), built up and decaying over time."""
+    """Whitecaps: breaking crests make foam that ages (fresh, then fading) and decays (docs/whitecaps.md).
+
+    ``criterion = "crest acceleration"`` (default): a crest breaks where the
+    whole sea's downward acceleration exceeds ``breaking_acceleration`` × g,
+    judged on the Jacobian of the waves longer than ``filter_spacing`` allows
+    (:func:`oceanrender.waves.foam.crest_acceleration_threshold`); the one
+    constant α was fitted once, at 12 m s⁻¹. ``"Jacobian"``: foam where J <
+    ``threshold`` (the older, wind-blind rule; ``threshold`` only then).
+    """
 
     enabled: bool = False
-    threshold: float = Field(0.3, ge=-1, le=1, description="foam forms where the Jacobian J is below this [-]")
-    decay_time: float = Field(2.0, gt=0, le=60, description="e-folding time of foam decay [s]")
-    gain: float = Field(1.0, gt=0, le=100, description="production rate per unit of J below the threshold [s⁻¹]")
+    criterion: Literal["crest acceleration", "Jacobian"] = "crest acceleration"
+    breaking_acceleration: float = Field(
+        0.665, gt=0, le=2, description="α: crests break where a_z < −α g (whole-sea statistics) [g]; fitted at 12 m s⁻¹")
+    threshold: float | None = Field(
+        None, ge=-1, le=1, description="criterion 'Jacobian' only: foam forms where J is below this [-]")
+    filter_spacing: float = Field(
+        0.1, gt=0, le=10, description="the foam's Jacobian keeps the waves a mesh of this spacing carries [m]")
+    decay_time: float = Field(2.0, gt=0, le=60, description="e-folding time of the whitecap coverage [s]")
+    fresh_decay_time: float | None = Field(
+        None, gt=0, le=60, description="e-folding time of a patch's reflectance [s]; None: Koepke's (1984) 0.4")
+    gain: float = Field(1000.0, gt=0, le=1e4,
+                        description="production rate per unit of J below the threshold [s⁻¹]; large: a breaking crest covers the water at once")
     history: float = Field(3.0, gt=0, le=10, description="history simulated before each frame, in decay times [-]")
-    albedo: float = Field(0.8, ge=0, le=1, description="reflectance of fully foamed water [-]")
+    time_step: float = Field(0.25, ge=0.01, le=5, description="step of the foam history's fixed time grid [s]")
+    radius: float = Field(200.0, gt=0, le=1e5,
+                          description="foam is tracked per vertex this far from the camera, its mean beyond [m]")
+    albedo: float = Field(0.55, ge=0, le=1, description="visible reflectance of fresh foam (Whitlock 1982) [-]")
+    whitewater_dissipation: float = Field(
+        100.0, gt=0, le=1e6, description="coast: white water where bores dissipate more than this [W m⁻²]")
+
+    @model_validator(mode="after")
+    def _criterion_keys(self) -> "FoamSettings":
+        if self.criterion == "Jacobian" and self.threshold is None:
+            raise ValueError("criterion 'Jacobian' needs a threshold (foam where J < threshold) [-]")
+        if self.criterion == "crest acceleration" and self.threshold is not None:
+            raise ValueError("threshold applies to criterion 'Jacobian' only; 'crest acceleration' uses "
+                             "breaking_acceleration [g]")
+        if self.history * self.decay_time / self.time_step > 2000:
+            raise ValueError(f"history × decay_time / time_step = "
+                             f"{self.history * self.decay_time / self.time_step:.0f} steps per frame; at most 2000")
+        return self
 
 
 class WaterSettings(_Section):
@@ -422,19 +458,28 @@ class CameraSettings(_Section):
 class VisionSettings(_Section):
     """The vision model Φ: brightness and chromatic adaptation, display."""
 
-    brightness: Literal["Ward 1994", "Ferwerda 1996"] = "Ward 1994"
+    brightness: Literal["Reinhard Devlin 2005", "Ward 1994", "Ferwerda 1996"] = Field(
+        "Reinhard Devlin 2005", description="brightness adaptation: the compressive photoreceptor model "
+                                            "(default) or a linear scale factor")
     chromatic_transform: Literal["Von Kries", "Bradford", "CAT02", "CAT16", "XYZ Scaling"] = "Von Kries"
     adaptation_luminance: float | Literal["frame", "daylight"] = Field(
-        "frame", description="world adaptation luminance [cd m⁻²], 'frame' for each frame's log-average, or "
-                             "'daylight' for an 18 % grey card under the scene's sun and sky"
+        "frame", description="world adaptation luminance [cd m⁻²], 'frame' for the log-average of what the "
+                             "camera sees (followed over time, see adaptation_time), or 'daylight' for an 18 % "
+                             "grey card under the scene's sun and sky"
     )
+    adaptation_time: float = Field(
+        0.4, ge=0, le=60, description="time constant of the eye's light adaptation [s] for adaptation_luminance = "
+                                      "'frame': a step in scene luminance is 95 % adapted to after 3x this; 0: "
+                                      "every frame adapts at once to its own log-average")
+    exposure: float = Field(0.0, ge=-10, le=10, description="exposure compensation [EV]: +1 doubles the light "
+                                                            "before the display response")
     display_luminance: float = Field(100.0, gt=0, le=10_000, description="display white luminance [cd m⁻²]")
 
     @field_validator("adaptation_luminance")
     @classmethod
     def _positive(cls, value: float | str) -> float | str:
-        if not isinstance(value, str) and not value > 0:
-            raise ValueError(f"expected 'frame', 'daylight' or a luminance > 0 cd/m², got {value}")
+        if not isinstance(value, str) and not (value > 0 and math.isfinite(value)):
+            raise ValueError(f"expected 'frame', 'daylight' or a finite luminance > 0 cd/m², got {value}")
         return value
 
 

@@ -5,6 +5,14 @@ with a [coastal] section: the same interface (``faces``, ``frame(t)``,
 ``spectrum``, ``finest_cell``, ``total_slope_variance``, ``terrain``; the
 :class:`~.frame.WaterSurface` protocol), so the renderer and the pipeline treat
 both alike.
+
+White water (``[foam] enabled``): where the stored flow dissipates energy in
+bores (:func:`oceanrender.coastal.whitewater.bore_dissipation_rate` above
+``[foam] whitewater_dissipation``), foam forms and stays where the bore left
+it, fading with the foam's decay times: a frame's foam is the largest of
+the white water of the stored frames of the last ``history × decay_time``
+seconds, each decayed by its age (coverage e^{−a/τ}, fresh foam
+e^{−a/τ − a/τ_f}). The renderer draws the fresh part, as on the open sea.
 """
 
 from __future__ import annotations
@@ -14,6 +22,8 @@ from pathlib import Path
 import numpy as np
 
 from ..coastal.simulation import read_frame_fields
+from ..coastal.whitewater import bore_dissipation_rate, whitewater_coverage
+from ..optics.foam import fresh_foam_decay_time
 from ..scene import arrays
 from .coastal_mesh import terrain_mesh, water_body_faces, water_body_vertices
 from .frame import FrameGeometry, Terrain
@@ -33,18 +43,63 @@ class CoastalBody:
         self.spectrum = directional_spectrum(scene.ocean)
         self.finest_cell = float(min(self.coastal.spacing))
         self.vertex_count = int(self.faces.max()) + 1
+        self._whitewater: dict[int, np.ndarray] = {}  # white-water coverage of stored frames (kept for the next)
 
     def frame_fields(self, t: float) -> dict[str, np.ndarray]:
         """The stored fields of the frame at scene time t [s]."""
         frame = int(round(t * self.scene.output.fps))
         return read_frame_fields(self.store, frame)
 
+    def whitewater(self, frame: int) -> np.ndarray:
+        """White-water coverage (ny, nx) of a stored frame [-]: the bore dissipation criterion."""
+        if frame not in self._whitewater:
+            fields = read_frame_fields(self.store, frame)
+            rate = bore_dissipation_rate(fields["h"], fields["hu"], fields["hv"], self.coastal.spacing,
+                                         self.coastal.h_min)
+            self._whitewater[frame] = whitewater_coverage(rate, self.scene.foam.whitewater_dissipation)
+        return self._whitewater[frame]
+
+    def foam_state(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """(F, B): white-water coverage and fresh-foam coverage (ny, nx) at scene time t [s] [-].
+
+        The maximum over the stored frames of the last ``history ×
+        decay_time`` seconds (from the first rendered frame on) of their white
+        water decayed by age a: e^{−a/τ} for F, e^{−a/τ − a/τ_f} for B.
+        Depends only on the store and t: a resumed run gets what an
+        uninterrupted one did.
+        """
+        foam = self.scene.foam
+        fps = self.scene.output.fps
+        frame = int(round(t * fps))
+        tau_f = foam.fresh_decay_time or fresh_foam_decay_time(foam.decay_time)
+        first = max(self.scene.output.frames[0], frame - int(np.ceil(foam.history * foam.decay_time * fps)))
+        coverage = np.zeros(self.coastal.shape)
+        fresh = np.zeros(self.coastal.shape)
+        for earlier in range(first, frame + 1):
+            age = (frame - earlier) / fps
+            white = self.whitewater(earlier)
+            coverage = np.maximum(coverage, white * np.exp(-age / foam.decay_time))
+            fresh = np.maximum(fresh, white * np.exp(-age / foam.decay_time - age / tau_f))
+        for old in [k for k in self._whitewater if k < first]:
+            del self._whitewater[old]
+        return coverage, fresh
+
+    def vertex_foam(self, t: float, vertex_count: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(F, B) per vertex of the body at t [s] [-]; 0 on the walls and the base, and where dry."""
+        coverage, fresh = self.foam_state(t)
+        wet = self.frame_fields(t)["h"] > self.coastal.h_min
+        out = np.zeros((2, vertex_count or self.vertex_count), np.float32)
+        out[0, : coverage.size] = np.where(wet, coverage, 0.0).ravel()
+        out[1, : fresh.size] = np.where(wet, fresh, 0.0).ravel()
+        return out[0], out[1]
+
     def frame(self, t: float) -> FrameGeometry:
-        """The closed water body at scene time t [s] (no foam in the coastal zone)."""
+        """The closed water body at scene time t [s]; with ``[foam] enabled`` its foam is the fresh white water B."""
         fields = self.frame_fields(t)
         positions, normals = water_body_vertices(self.bed, fields["h"], self.coastal.spacing, self.coastal.origin,
                                                  self.coastal.h_min)
-        return FrameGeometry(positions, normals, None)
+        foam = self.vertex_foam(t, len(positions))[1] if self.scene.foam.enabled else None
+        return FrameGeometry(positions, normals, foam)
 
     def total_slope_variance(self, roughness: float) -> float:
         """Mean-square slope [-]: the unresolved roughness² plus the simulated surface's over wet cells.

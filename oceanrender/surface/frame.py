@@ -25,7 +25,7 @@ class FrameGeometry:
     Attributes
     ----------
     positions, normals : (V, 3) float32   Vertex positions [m] and unit normals.
-    foam : (V,) float32 or None            Foam coverage per vertex [-] (0 off the surface).
+    foam : (V,) float32 or None            Fresh-foam weight per vertex [-]: the fraction of the surface that reflects like fresh foam (open sea: whitecap coverage × its reflectance decay, docs/whitecaps.md; coast: white water), 0 off the surface.
     roughness : (V,) float32 or None       Beckmann α of the surface BSDF per vertex [-]: the slopes of
                                            the waves the mesh does not carry there; None: one scene-wide α.
     """

@@ -89,3 +89,40 @@ def test_nan_pixels_are_repaired_from_neighbours():
     assert count == 2
     assert np.all(np.isfinite(fixed))
     np.testing.assert_allclose(fixed, 1.0)
+
+
+def test_foam_layer_reflects_fresh_foam_on_its_fraction(variant):
+    # A horizontal quad under a constant sky of radiance 1 W m⁻² sr⁻¹ nm⁻¹, seen from above: a Lambertian
+    # layer of reflectance R(λ) returns R(λ) (one bounce, nothing occludes the sky). With vertex_foam = w
+    # over a grey stand-in for the water (0.1), Y/∫ȳ is (1 − w) 0.1 + w ⟨R⟩_ȳ, R = 0.55 × Frouin's factor.
+    import mitsuba as mi
+
+    from oceanrender.optics.foam import foam_spectral_factor_Frouin1996
+    from oceanrender.render.renderer import FOAM_ATTRIBUTE, foamy_surface_bsdf, mitsuba_floats
+
+    cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(360, 830, 1))
+    ybar = cmfs.values[:, 1]
+    foam_y = float(np.sum(ybar * 0.55 * foam_spectral_factor_Frouin1996(cmfs.wavelengths)) / ybar.sum())
+    stand_in = {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 0.1}}
+    for weight in (0.0, 0.4, 1.0):
+        props = mi.Properties()
+        props["bsdf"] = mi.load_dict(foamy_surface_bsdf(stand_in, 0.55))
+        mesh = mi.Mesh("quad", 4, 2, props)
+        mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(np.full(4, weight)))
+        params = mi.traverse(mesh)
+        params["vertex_positions"] = mitsuba_floats([[-50, -50, 0], [50, -50, 0], [50, 50, 0], [-50, 50, 0]])
+        params["faces"] = mi.UInt32([0, 1, 2, 0, 2, 3])
+        params.update()
+        scene = mi.load_dict({
+            "type": "scene",
+            "integrator": {"type": "path", "max_depth": 2},
+            "sensor": {"type": "perspective", "fov": 20.0,
+                       "to_world": mi.ScalarTransform4f().look_at(origin=[0, 0, 5], target=[0, 0, 0], up=[0, 1, 0]),
+                       "film": xyz_film(16, 16), "sampler": {"type": "independent", "sample_count": 256}},
+            "environment": {"type": "constant", "radiance": {"type": "spectrum", "value": 1.0}},
+            "quad": mesh,
+        })
+        y = np.array(mi.render(scene, seed=1))[..., 1].mean() / cmf_integrals()[1]
+        # 65 536 samples of a cosine-weighted bounce and the spectral sampling: ≲ 1 % Monte Carlo error
+        assert y == pytest.approx((1 - weight) * 0.1 + weight * foam_y, rel=0.02)
+    assert 0.5 < foam_y < 0.55  # flat in the visible, falling beyond 555 nm

@@ -42,8 +42,15 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[output]\nresolution = [320]\n", "[output] resolution[1]: expected more values"),
         ("[sun]\nelevation = 120\n", "[sun] elevation: Input should be less than or equal to 90"),
         ("[camera]\nposition = [0, 0, 1]\ntarget = [0, 0, 1]\n", "camera target must differ"),
-        ("[vision]\nbrightness = 'Reinhard'\n", "[vision] brightness: Input should be 'Ward 1994' or 'Ferwerda 1996'"),
-        ("[vision]\nadaptation_luminance = -5.0\n", "[vision] adaptation_luminance: expected 'frame', 'daylight' or a luminance > 0"),
+        ("[vision]\nbrightness = 'Reinhard'\n",
+         "[vision] brightness: Input should be 'Reinhard Devlin 2005', 'Ward 1994' or 'Ferwerda 1996' (got 'Reinhard')"),
+        ("[vision]\nadaptation_luminance = -5.0\n",
+         "[vision] adaptation_luminance: expected 'frame', 'daylight' or a finite luminance > 0"),
+        ("[vision]\nadaptation_luminance = inf\n", "[vision] adaptation_luminance: expected 'frame', 'daylight' or a finite"),
+        ("[vision]\nexposure = 10.5\n", "[vision] exposure: Input should be less than or equal to 10 (got 10.5)"),
+        ("[vision]\nexposure = nan\n", "[vision] exposure: Input should be less than or equal to 10 (got nan)"),
+        ("[vision]\nadaptation_time = -0.1\n", "[vision] adaptation_time: Input should be greater than or equal to 0"),
+        ("[vision]\nadaptation_time = inf\n", "[vision] adaptation_time: Input should be less than or equal to 60"),
         ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or a spectral variant"),
         ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
         ("[ocean\n", "not valid TOML"),
@@ -228,3 +235,30 @@ def test_monotone_sun_keyed_above_the_horizon_stays_above_it(tmp_path):
 def test_elfouhaily_refuses_what_it_sets_itself(key, value):
     with pytest.raises(SceneError, match=key):
         scene_from_dict({"name": "e", "ocean": {"spectrum": "Elfouhaily 1997", key: value}})
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("[foam]\nthreshold = 0.6\n", "foam: threshold applies to criterion 'Jacobian' only"),
+        ("[foam]\ncriterion = 'Jacobian'\n", "foam: criterion 'Jacobian' needs a threshold"),
+        ("[foam]\ncriterion = 'folding'\n", "[foam] criterion: Input should be 'crest acceleration' or 'Jacobian'"),
+        ("[foam]\nbreaking_acceleration = 0\n", "[foam] breaking_acceleration: Input should be greater than 0"),
+        ("[foam]\ntime_step = 0.001\n", "[foam] time_step: Input should be greater than or equal to 0.01"),
+        ("[foam]\nwhitewater_dissipation = -1\n", "[foam] whitewater_dissipation: Input should be greater than 0"),
+        ("[foam]\ndecay_time = 50.0\nhistory = 10.0\ntime_step = 0.1\n", "foam: history × decay_time / time_step"),
+    ],
+)
+def test_foam_errors_name_the_key(tmp_path, text, expected):
+    path = write(tmp_path, text)
+    with pytest.raises(SceneError) as info:
+        load_scene(path)
+    message = str(info.value)
+    assert expected in message and "\n" not in message, message
+
+
+def test_foam_defaults_are_the_published_values():
+    foam = scene_from_dict({"name": "t"}).foam
+    assert foam.criterion == "crest acceleration" and foam.threshold is None
+    assert foam.albedo == 0.55  # fresh foam, Whitlock et al. (1982)
+    assert scene_from_dict({"name": "t", "foam": {"criterion": "Jacobian", "threshold": 0.3}}).foam.threshold == 0.3

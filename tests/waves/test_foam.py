@@ -4,8 +4,16 @@ import numpy as np
 import pytest
 
 from oceanrender.waves.fft_ocean import FFTOcean, OceanGrid
-from oceanrender.waves.foam import FOAM_DECAY_TIME_SEAWATER, FoamAccumulator, foam_production_rate, foam_step
-from tests.tolerances import ROUNDOFF
+from oceanrender.waves.foam import (
+    FOAM_DECAY_TIME_SEAWATER,
+    FoamAccumulator,
+    crest_acceleration_threshold,
+    foam_production_rate,
+    foam_step,
+    two_stage_foam_step,
+    whitecap_fraction_MonahanOMuircheartaigh1980,
+)
+from tests.tolerances import QUADRATURE, ROUNDOFF
 
 
 def test_no_foam_without_folding(rng):
@@ -94,3 +102,81 @@ def test_accumulator_steps_and_checkpoints():
         foam.advance(jacobian, 1.0)  # backwards
     with pytest.raises(ValueError):
         FoamAccumulator(decay_time=0.0)
+
+
+def test_monahan_whitecap_fraction_reference_values():
+    # W = 3.84e-6 U^3.41 (Monahan & O'Muircheartaigh 1980, Eq. 5): 0.46 %, 1.8 %, 4.9 % at 8, 12, 16 m/s,
+    # the values quoted to 2 figures (hence 3 %: half a unit in the last quoted digit of 0.46 is 1 %).
+    W = whitecap_fraction_MonahanOMuircheartaigh1980([8.0, 12.0, 16.0])
+    np.testing.assert_allclose(W, [0.0046, 0.018, 0.049], rtol=0.03)
+    assert whitecap_fraction_MonahanOMuircheartaigh1980(0.0) == 0.0
+    # the power law: doubling the wind multiplies W by 2^3.41
+    assert W[2] / W[0] == pytest.approx(2**3.41, rel=ROUNDOFF)
+
+
+def test_crest_acceleration_threshold_limits_and_gaussian_equivalence(rng):
+    # All waves carried: J_c = 1 − λ α (J − 1 ≈ λ a_z/g, a_z < −α g)
+    assert crest_acceleration_threshold(0.5, 0.8, 0.04, 0.04) == pytest.approx(0.6, rel=ROUNDOFF)
+    # fewer waves carried: the threshold moves towards 1 as √(m_r/m_t)
+    assert crest_acceleration_threshold(0.5, 0.8, 0.01, 0.04) == pytest.approx(0.8, rel=ROUNDOFF)
+    # Gaussian sea: the resolved field below its threshold covers the fraction of the surface where the
+    # whole field (resolved + an independent unresolved part) exceeds α — the point of the rescaling.
+    m_r, m_t, alpha, lam = 0.02, 0.05, 0.5, 0.8
+    n = 2_000_000
+    resolved = rng.normal(0.0, np.sqrt(m_r), n)
+    total = resolved + rng.normal(0.0, np.sqrt(m_t - m_r), n)
+    j_resolved = 1 + lam * resolved  # J − 1 = λ a_z/g
+    covered = np.mean(j_resolved < crest_acceleration_threshold(alpha, lam, m_r, m_t))
+    breaking = np.mean(total < -alpha)
+    # both ≈ 0.0127; binomial σ of each ≈ 8e-5: 6σ of the difference
+    assert covered == pytest.approx(breaking, abs=6 * np.sqrt(2 * breaking / n))
+
+
+def test_jacobian_minus_one_is_choppiness_times_vertical_acceleration_over_g():
+    # Deep water, first order in λ: J − 1 = λ a_z / g, a_z = ∂²η/∂t² (the identity the criterion rests on)
+    lam, g = 0.05, 9.81
+    ocean = FFTOcean(OceanGrid(64, 200.0), 8.0, 0.0, seed=5, choppiness=lam, dtype=np.float64)
+    dt, t = 1e-3, 3.0
+    eta = [ocean.fields(t + s).height for s in (-dt, 0.0, dt)]
+    a_z = (eta[0] - 2 * eta[1] + eta[2]) / dt**2
+    j = ocean.fields(t).jacobian
+    # Residual: the λ² term ((∂Dx/∂x)(∂Dy/∂y) − (∂Dx/∂y)²) and the O(dt²) difference error: 1 % of the scale
+    np.testing.assert_allclose(j - 1, lam * a_z / g, rtol=0, atol=0.01 * np.abs(j - 1).max())
+
+
+@pytest.mark.parametrize("jacobian", [-0.5, 0.2, 0.6, 0.65, 2.0])
+def test_two_stage_step_is_the_exact_solution(jacobian):
+    from scipy.integrate import solve_ivp
+
+    gain, threshold, tau, tau_f, dt = 2.0, 0.7, 2.0, 1.5, 1.3
+    s = gain * max(threshold - jacobian, 0.0)
+    f0, b0 = 0.3, 0.1
+
+    def rhs(_, y):
+        return [s * (1 - y[0]) - y[0] / tau, s * (1 - y[1]) - y[1] * (1 / tau + 1 / tau_f)]
+
+    ref = solve_ivp(rhs, [0, dt], [f0, b0], rtol=1e-11, atol=1e-13).y[:, -1]
+    coverage, fresh = two_stage_foam_step(f0, b0, jacobian, dt, threshold, tau, tau_f, gain)
+    # the integrator's target 1e-11 on values of scale 1: QUADRATURE
+    np.testing.assert_allclose([coverage, fresh], ref, rtol=0, atol=QUADRATURE)
+    # F is foam_step's coverage
+    assert coverage == pytest.approx(foam_step(f0, jacobian, dt, threshold, tau, gain), abs=ROUNDOFF)
+
+
+def test_two_stage_bounds_and_ageing(rng):
+    coverage = rng.uniform(0, 1, 5000)
+    fresh = coverage * rng.uniform(0, 1, 5000)
+    jacobian = rng.uniform(-2, 2, 5000)
+    for dt in [0.0, 0.01, 0.25, 3.0, 100.0]:
+        for gain in [0.0, 1.0, 1e3]:
+            f, b = two_stage_foam_step(coverage, fresh, jacobian, dt, 0.5, 2.0, 0.6, gain)
+            assert np.all((0 <= b) & (b <= f) & (f <= 1))
+    # no production: F decays with τ, B with 1/τ + 1/τ_f, so B/F = e^{−t/τ_f} (the foam's reflectance ageing)
+    f, b = two_stage_foam_step(1.0, 1.0, 1.0, 1.2, 0.5, 2.0, 0.6, 50.0)
+    assert f == pytest.approx(np.exp(-1.2 / 2.0), rel=ROUNDOFF)
+    assert b / f == pytest.approx(np.exp(-1.2 / 0.6), rel=ROUNDOFF)
+    # strong, lasting breaking (stage A): fresh foam saturates towards full coverage, old foam is renewed
+    f, b = two_stage_foam_step(1.0, 0.0, -1.0, 1.0, 0.5, 2.0, 0.6, 1e3)
+    assert f > 0.99 and b > 0.99
+    with pytest.raises(ValueError):
+        two_stage_foam_step(0.0, 0.0, 0.0, 1.0, 0.5, 2.0, 0.0, 1.0)
