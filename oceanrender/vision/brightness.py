@@ -468,13 +468,7 @@ def brightness_scale_factor(
     ValueError
         If ``method`` is not a known name; the message lists the known names.
     """
-    if method not in BRIGHTNESS_METHODS:
-        raise ValueError(
-            f"unknown brightness method {method!r}; known methods: "
-            f"{', '.join(repr(name) for name in BRIGHTNESS_METHODS)}"
-        )
-
-    return BRIGHTNESS_METHODS[method](adaptation_luminance, display_max_luminance)
+    return _known(method, BRIGHTNESS_METHODS)(adaptation_luminance, display_max_luminance)
 
 
 def brightness_response(method: str, relative_intensity: ArrayLike) -> NDArray[np.float64]:
@@ -485,10 +479,14 @@ def brightness_response(method: str, relative_intensity: ArrayLike) -> NDArray[n
     ValueError
         If ``method`` is not a known name; the message lists the known names.
     """
-    if method not in BRIGHTNESS_RESPONSES:
+    return _known(method, BRIGHTNESS_RESPONSES)(relative_intensity)
+
+
+def _known(method: str, functions: dict[str, Callable]) -> Callable:
+    """``functions[method]``, or a ValueError that lists the known names."""
+    if method not in functions:
         raise ValueError(
             f"unknown brightness method {method!r}; known methods: "
-            f"{', '.join(repr(name) for name in BRIGHTNESS_RESPONSES)}"
+            f"{', '.join(repr(name) for name in functions)}"
         )
-
-    return BRIGHTNESS_RESPONSES[method](relative_intensity)
+    return functions[method]

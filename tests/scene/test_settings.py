@@ -54,6 +54,13 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or a spectral variant"),
         ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
         ("[ocean\n", "not valid TOML"),
+        ("[foam]\nthreshold = 0.6\n", "foam: threshold applies to criterion 'Jacobian' only"),
+        ("[foam]\ncriterion = 'Jacobian'\n", "foam: criterion 'Jacobian' needs a threshold"),
+        ("[foam]\ncriterion = 'folding'\n", "[foam] criterion: Input should be 'crest acceleration' or 'Jacobian'"),
+        ("[foam]\nbreaking_acceleration = 0\n", "[foam] breaking_acceleration: Input should be greater than 0"),
+        ("[foam]\ntime_step = 0.001\n", "[foam] time_step: Input should be greater than or equal to 0.01"),
+        ("[foam]\nwhitewater_dissipation = -1\n", "[foam] whitewater_dissipation: Input should be greater than 0"),
+        ("[foam]\ndecay_time = 50.0\nhistory = 10.0\ntime_step = 0.1\n", "foam: history × decay_time / time_step"),
     ],
 )
 def test_errors_are_one_line_with_file_and_key(tmp_path, text, expected):
@@ -235,26 +242,6 @@ def test_monotone_sun_keyed_above_the_horizon_stays_above_it(tmp_path):
 def test_elfouhaily_refuses_what_it_sets_itself(key, value):
     with pytest.raises(SceneError, match=key):
         scene_from_dict({"name": "e", "ocean": {"spectrum": "Elfouhaily 1997", key: value}})
-
-
-@pytest.mark.parametrize(
-    ("text", "expected"),
-    [
-        ("[foam]\nthreshold = 0.6\n", "foam: threshold applies to criterion 'Jacobian' only"),
-        ("[foam]\ncriterion = 'Jacobian'\n", "foam: criterion 'Jacobian' needs a threshold"),
-        ("[foam]\ncriterion = 'folding'\n", "[foam] criterion: Input should be 'crest acceleration' or 'Jacobian'"),
-        ("[foam]\nbreaking_acceleration = 0\n", "[foam] breaking_acceleration: Input should be greater than 0"),
-        ("[foam]\ntime_step = 0.001\n", "[foam] time_step: Input should be greater than or equal to 0.01"),
-        ("[foam]\nwhitewater_dissipation = -1\n", "[foam] whitewater_dissipation: Input should be greater than 0"),
-        ("[foam]\ndecay_time = 50.0\nhistory = 10.0\ntime_step = 0.1\n", "foam: history × decay_time / time_step"),
-    ],
-)
-def test_foam_errors_name_the_key(tmp_path, text, expected):
-    path = write(tmp_path, text)
-    with pytest.raises(SceneError) as info:
-        load_scene(path)
-    message = str(info.value)
-    assert expected in message and "\n" not in message, message
 
 
 def test_foam_defaults_are_the_published_values():
