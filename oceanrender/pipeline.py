@@ -257,6 +257,8 @@ class Sequence:
             "frame": frame,
             "time_s": self.time_of(frame),
             "spp": self.spp,
+            "in_water_spp": self.renderer.in_water_spp(self.spp) if self.renderer.in_water is not None else self.spp,
+            "roulette_depth": self.scene.render.roulette_depth,
             "variant": self.variant,
             "oceanrender_version": __version__,
             "mitsuba_version": mitsuba.__version__,

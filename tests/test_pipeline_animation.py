@@ -136,6 +136,28 @@ def test_moving_sun_changes_sky_integrator_white_and_image_without_recompiling(v
 
 
 @pytest.mark.render
+def test_two_pass_frames_point_both_integrators_at_the_moving_sun(variant):
+    from oceanrender.pipeline import Sequence
+
+    scene = tiny_scene(sun={"keys": SUN_KEYS}, render={"in_water_clamp": 20.0, "in_water_fraction": 0.25,
+                                                       "roulette_depth": 2})
+    sequence = Sequence(scene, variant)
+    renderer = sequence.renderer
+    main, in_water = renderer.integrators()
+    assert (main.lobes, in_water.lobes) == ("reflection", "transmission")
+    assert (main.rr_depth, in_water.rr_depth) == (2, 2)
+    # max(1, round(0.25 spp)): 4 → 1, 2 → 1 (never 0), 24 → 6.
+    assert [renderer.in_water_spp(n) for n in (4, 2, 24)] == [1, 1, 6]
+    frame = sequence.compute_frame(2)
+    expected = sun_direction(12.0, 250.0)
+    for integrator in (main, in_water):  # float32 unit vectors: a few ulp of 1
+        np.testing.assert_allclose(np.ravel(integrator.sun), expected, atol=8 * EPS32)
+        assert float(np.ravel(integrator.in_water_clamp)[0]) == pytest.approx(sequence.in_water_clamp, rel=1e-6)
+    assert frame.metadata["in_water_spp"] == renderer.in_water_spp(sequence.spp)
+    assert frame.metadata["roulette_depth"] == 2
+
+
+@pytest.mark.render
 def test_split_integrator_holds_its_sun_and_clamp_as_opaque_values(variant):
     import drjit as dr
     import mitsuba as mi

@@ -55,8 +55,12 @@ _REGISTERED: set[str] = set()
 _CLASSES: dict[str, type] = {}
 
 
+#: What a split sample returns: both lobes (the default), or one lobe alone (a pass of a two-pass frame).
+LOBES = ("both", "reflection", "transmission")
+
+
 def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: float = 1.333,
-                     sun_lobe_alpha: float = 0.2, in_water_clamp: float = 0.0) -> dict:
+                     sun_lobe_alpha: float = 0.2, in_water_clamp: float = 0.0, lobes: str = "both") -> dict:
     """Scene-dict entry of the split-surface integrator.
 
     Parameters
@@ -71,6 +75,11 @@ def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: flo
                              of the sea surface [-].
     in_water_clamp : float   Largest radiance one sample of the transmitted lobe may bring back,
                              per wavelength [W m⁻² sr⁻¹ nm⁻¹]; 0: no clamp (unbiased).
+    lobes : str              ``"both"``: every sample follows both lobes of the split vertex.
+                             ``"reflection"``: every sample *except* the transmitted lobe (camera rays
+                             that are not split included); ``"transmission"``: the transmitted lobe
+                             alone (0 elsewhere). The two passes add up to ``"both"`` in expectation,
+                             so each can be given its own sample count (:mod:`oceanrender.render.passes`).
 
     Call :func:`register` (after the variant is set) before loading the scene.
     """
@@ -88,6 +97,10 @@ def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: flo
         raise ValueError(f"in_water_clamp must be ≥ 0 [W m⁻² sr⁻¹ nm⁻¹], got {in_water_clamp}")
     if in_water_clamp > 0:
         entry["in_water_clamp"] = float(in_water_clamp)
+    if lobes not in LOBES:
+        raise ValueError(f"lobes must be one of {LOBES}, got {lobes!r}")
+    if lobes != "both":
+        entry["lobes"] = lobes
     return entry
 
 
@@ -156,7 +169,8 @@ def _define_class() -> type:
         """``volpath`` with both lobes of the camera's first water hit sampled every time.
 
         Properties: ``max_depth`` (default −1), ``rr_depth`` (default 5),
-        ``hide_emitters`` (default false), as in ``volpath``.
+        ``hide_emitters`` (default false), as in ``volpath``; ``lobes``
+        (``"both"``, ``"reflection"`` or ``"transmission"``, see :func:`split_integrator`).
 
         Notes
         -----
@@ -188,6 +202,11 @@ def _define_class() -> type:
                 raise ValueError(f"max_depth must be -1 (unbounded) or ≥ 0, got {self.max_depth}")
             if self.rr_depth < 1:
                 raise ValueError(f"rr_depth must be ≥ 1, got {self.rr_depth}")
+            self.lobes = str(props.get("lobes", "both"))
+            if self.lobes not in LOBES:
+                raise ValueError(f"lobes must be one of {LOBES}, got {self.lobes!r}")
+            if self.lobes != "both" and not jit:
+                raise NotImplementedError("single-lobe passes are implemented for JIT variants only")
             # A split needs a bounce after the first vertex: max_depth ≥ 2 (or unbounded).
             self.splits = self.max_depth < 0 or self.max_depth >= 2
             # NOTE: the sun and the clamp are opaque Dr.Jit values (kernel parameters), not Python
@@ -284,8 +303,25 @@ def _define_class() -> type:
                 L_r += self.reflected.sample(scene, sampler, mi.RayDifferential3f(ray_r), None, True)[0]
             return L_r
 
+        def _transmitted(self, scene, sampler, si, bsdf, split, bsdfs):
+            """w_t L_t: the transmitted lobe of the split vertex ``si``, continued in the medium behind it."""
+            ctx_t = mi.BSDFContext(mi.TransportMode.Radiance, mi.BSDFFlags.Transmission)
+            bs_t, weight_t = bsdf.sample(ctx_t, si, sampler.next_1d(split), sampler.next_2d(split), split)
+            act_t = split & (bs_t.pdf > 0) & dr.any(weight_t != 0.0)
+            ray_t = mi.RayDifferential3f(si.spawn_ray(si.to_world(bs_t.wo)))
+            target = si.target_medium(ray_t.d)
+            if jit:
+                L_t = self._continue(scene, sampler, ray_t, target, act_t, bsdfs)
+            else:
+                L_t = self.transmitted.sample(scene, sampler, ray_t, target, act_t)[0] if act_t else mi.Spectrum(0.0)
+            if self.clamps:
+                # NOTE: a stated, biased firefly clamp (scene setting render.in_water_clamp).
+                L_t = dr.minimum(L_t, self.in_water_clamp)
+            return dr.select(act_t, weight_t * L_t, 0.0)
+
         def to_string(self):
-            return f"SplitSurfaceIntegrator[max_depth={self.max_depth}, rr_depth={self.rr_depth}]"
+            return (f"SplitSurfaceIntegrator[max_depth={self.max_depth}, rr_depth={self.rr_depth}, "
+                    f"lobes={self.lobes}]")
 
         @staticmethod
         def split_setup(scene, medium):
@@ -315,9 +351,11 @@ def _define_class() -> type:
             return (bsdfs, media) if bsdfs else None
 
         def sample(self, scene, sampler, ray, medium=None, active=True):
-            full, transmitted = self.full, self.transmitted
+            full = self.full
             setup = self.split_setup(scene, medium) if self.splits else None
             if setup is None:
+                if self.lobes == "transmission":  # nothing is split: the whole sample is the other pass's
+                    return mi.Spectrum(0.0), mi.Bool(active), []
                 return full.sample(scene, sampler, ray, medium, active)
             bsdfs, _ = setup
 
@@ -333,6 +371,10 @@ def _define_class() -> type:
                 split &= on_split_bsdf
             else:
                 split = bool(split) and any(bsdf is b for b in bsdfs)
+
+            if self.lobes == "transmission":
+                L_t = self._transmitted(scene, sampler, si, bsdf, split, bsdfs)
+                return dr.select(split, L_t, 0.0), mi.Bool(active), []
 
             # NOTE: volpath first, before any random number is drawn here, so a
             # camera ray that is not split gets exactly volpath's sample.
@@ -373,19 +415,8 @@ def _define_class() -> type:
             result += dr.select(act_r, weight_r * L_r, 0.0)
 
             # ---- Transmission lobe: continue in the medium behind the surface.
-            ctx_t = mi.BSDFContext(mi.TransportMode.Radiance, mi.BSDFFlags.Transmission)
-            bs_t, weight_t = bsdf.sample(ctx_t, si, sampler.next_1d(split), sampler.next_2d(split), split)
-            act_t = split & (bs_t.pdf > 0) & dr.any(weight_t != 0.0)
-            ray_t = mi.RayDifferential3f(si.spawn_ray(si.to_world(bs_t.wo)))
-            target = si.target_medium(ray_t.d)
-            if jit:
-                L_t = self._continue(scene, sampler, ray_t, target, act_t, bsdfs)
-            else:
-                L_t = transmitted.sample(scene, sampler, ray_t, target, act_t)[0] if act_t else mi.Spectrum(0.0)
-            if self.clamps:
-                # NOTE: a stated, biased firefly clamp (scene setting render.in_water_clamp).
-                L_t = dr.minimum(L_t, self.in_water_clamp)
-            result += dr.select(act_t, weight_t * L_t, 0.0)
+            if self.lobes == "both":
+                result += self._transmitted(scene, sampler, si, bsdf, split, bsdfs)
 
             return dr.select(split, result, full_L), split | full_valid, []
 

@@ -46,6 +46,11 @@ def film_to_absolute_XYZ(film: np.ndarray) -> np.ndarray:
     return K_M * np.asarray(film, dtype=np.float64)
 
 
+def in_water_seed(seed: int) -> int:
+    """Sampler seed of a two-pass frame's in-water pass: ``seed`` offset by 0x6A09E667, far from the frame seeds (seed + frame)."""
+    return (int(seed) + 0x6A09E667) % (1 << 32)
+
+
 def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
     """Replace non-finite pixels by the mean of their finite 3×3 neighbours.
 
@@ -205,6 +210,11 @@ class WaterRenderer:
     bands: int = 0
     #: The last render's spectral bands (H, W, bands), band integrals ∫L dλ [W m⁻² sr⁻¹], or None.
     last_bands: np.ndarray | None = None
+    #: Two-pass frames (``render.in_water_fraction`` < 1): the ``split`` integrator of the in-water pass
+    #: (``lobes="transmission"``; the scene's own then has ``lobes="reflection"``), else None.
+    in_water: object | None = None
+    #: Samples per pixel of the in-water pass as a fraction of the frame's spp [-].
+    in_water_fraction: float = 1.0
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -231,9 +241,14 @@ class WaterRenderer:
             sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
                             "water_ior": settings.water.ior, "sun_lobe_alpha": float(sun_lobe_alpha),
                             "in_water_clamp": float(in_water_clamp)}
+        render = settings.render
+        two_pass = render.integrator == "split" and render.in_water_fraction < 1.0
+        integrator = {"kind": render.integrator, "max_depth": render.max_depth, "rr_depth": render.roulette_depth,
+                      **sun_sampling}
+        in_water = mi.load_dict(volumetric_integrator(**integrator, lobes="transmission")) if two_pass else None
         scene = mi.load_dict({
             "type": "scene",
-            "integrator": volumetric_integrator(settings.render.integrator, settings.render.max_depth, **sun_sampling),
+            "integrator": volumetric_integrator(**integrator, lobes="reflection" if two_pass else "both"),
             "sensor": perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands),
                                          spp or settings.output.spp),
             "sky": sunsky_emitter(settings.sun),
@@ -241,7 +256,16 @@ class WaterRenderer:
             **terrain_shapes(terrain),
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
-                   bands=settings.output.spectral_bands)
+                   bands=settings.output.spectral_bands, in_water=in_water,
+                   in_water_fraction=render.in_water_fraction if two_pass else 1.0)
+
+    def integrators(self) -> list:
+        """The Mitsuba integrators a frame uses: the scene's, then the in-water pass's (two-pass frames)."""
+        return [self.scene.integrator()] + ([self.in_water] if self.in_water is not None else [])
+
+    def in_water_spp(self, spp: int) -> int:
+        """Samples per pixel of the in-water pass of a ``spp`` frame: max(1, round(fraction × spp)) [-]."""
+        return max(1, round(self.in_water_fraction * int(spp)))
 
     def point_camera(self, position, target, fov: float) -> None:
         """Move the camera to ``position`` looking at ``target`` [m], horizontal ``fov`` [deg], in place."""
@@ -255,25 +279,33 @@ class WaterRenderer:
         scene parameter, and the integrator holds its sun as an opaque value.
         """
         apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
-        integrator = self.scene.integrator()
-        if getattr(integrator, "sun", None) is not None:
-            integrator.set_sun(sun_direction(float(elevation), float(azimuth)))
+        for integrator in self.integrators():
+            if getattr(integrator, "sun", None) is not None:
+                integrator.set_sun(sun_direction(float(elevation), float(azimuth)))
 
     def set_in_water_clamp(self, value: float) -> None:
         """Set the ``split`` integrator's in-water clamp [W m⁻² sr⁻¹ nm⁻¹] when it has one (else nothing)."""
-        integrator = self.scene.integrator()
-        if getattr(integrator, "clamps", False):
-            integrator.set_in_water_clamp(float(value))
+        for integrator in self.integrators():
+            if getattr(integrator, "clamps", False):
+                integrator.set_in_water_clamp(float(value))
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
         update_water_parameters(self.params, geometry)
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
-        """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count)."""
+        """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count).
+
+        A two-pass frame adds the in-water pass (:meth:`in_water_spp` samples, its own
+        seed stream) to the rest (``spp``): the film values are per-pixel means, and the two
+        passes estimate disjoint parts of each sample's radiance, so their sum is unbiased.
+        """
         import mitsuba as mi  # noqa: PLC0415
 
         film = np.array(mi.render(self.scene, seed=int(seed), spp=int(spp)))
+        if self.in_water is not None:
+            film = film + np.array(mi.render(self.scene, integrator=self.in_water, seed=in_water_seed(seed),
+                                             spp=self.in_water_spp(spp)))
         if self.bands:
             self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]
         return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))

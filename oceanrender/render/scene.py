@@ -213,8 +213,9 @@ def water_surface_bsdf(ior: float, alpha: float, per_vertex: bool = False) -> di
 
 
 def volumetric_integrator(kind: str, max_depth: int, sun=None, water_ior: float = 1.333,
-                          sun_lobe_alpha: float = 0.2, in_water_clamp: float = 0.0) -> dict:
-    """``volpath``, ``volpathmis`` or ``split`` with Russian roulette after 5 bounces.
+                          sun_lobe_alpha: float = 0.2, in_water_clamp: float = 0.0, rr_depth: int = 5,
+                          lobes: str = "both") -> dict:
+    """``volpath``, ``volpathmis`` or ``split`` with Russian roulette after ``rr_depth`` vertices.
 
     ``split`` is :class:`oceanrender.render.integrator.SplitSurfaceIntegrator`:
     volpath that follows both Fresnel lobes at the camera's first water hit
@@ -222,15 +223,19 @@ def volumetric_integrator(kind: str, max_depth: int, sun=None, water_ior: float 
     also samples the sunlight refracted into the water at every in-water vertex
     (:mod:`oceanrender.render.underwater`; ``water_ior`` [-], ``sun_lobe_alpha``
     the total rms slope of the surface [-]; ``in_water_clamp`` the firefly clamp of
-    the in-water radiance per sample [W m⁻² sr⁻¹ nm⁻¹], 0 for none).
+    the in-water radiance per sample [W m⁻² sr⁻¹ nm⁻¹], 0 for none); ``lobes`` which
+    lobes of the split vertex a sample returns (``split`` only, see
+    :func:`oceanrender.render.integrator.split_integrator`).
     """
     if kind == "split":
         from .integrator import register, split_integrator  # noqa: PLC0415
 
         register()
-        return split_integrator(int(max_depth), rr_depth=5, sun=sun, water_ior=water_ior,
-                                sun_lobe_alpha=sun_lobe_alpha, in_water_clamp=in_water_clamp)
-    return {"type": kind, "max_depth": int(max_depth), "rr_depth": 5}
+        return split_integrator(int(max_depth), rr_depth=int(rr_depth), sun=sun, water_ior=water_ior,
+                                sun_lobe_alpha=sun_lobe_alpha, in_water_clamp=in_water_clamp, lobes=lobes)
+    if lobes != "both":
+        raise ValueError(f"only the 'split' integrator has single-lobe passes, not {kind!r}")
+    return {"type": kind, "max_depth": int(max_depth), "rr_depth": int(rr_depth)}
 
 
 def apply_camera(params, pose: CameraPose, sensor: str = "sensor") -> None:

@@ -68,6 +68,15 @@ class RenderSettings(_Section):
         0.0, ge=0, le=1e6,
         description="('split') firefly clamp: largest in-water radiance of one sample, in multiples of the "
                     "mean radiance of a white Lambertian surface under the scene's sun and sky; 0: off (unbiased)")
+    roulette_depth: int = Field(
+        5, ge=1, le=1024,
+        description="path vertices before Russian roulette starts (as volpath's rr_depth; 'split' continues "
+                    "its lobes with one less)")
+    in_water_fraction: float = Field(
+        1.0, gt=0, le=1,
+        description="('split') samples per pixel of the transmitted (in-water) lobe, as a fraction of spp: "
+                    "below 1 a frame is two passes, the rest at spp and the in-water lobe at "
+                    "max(1, round(fraction x spp)); the sum is unbiased")
     denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")

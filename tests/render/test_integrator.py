@@ -136,6 +136,9 @@ def relative_noise(films):
 
 @pytest.fixture(scope="module")
 def scenes(variant):
+    import mitsuba as mi
+
+    register()
     # NOTE: all scenes are loaded before the first render. Loading any Mitsuba object
     # (a scene, even a sampler) adds instances to the registries that the kernels'
     # virtual calls dispatch over, so every kernel compiled before is compiled again.
@@ -143,11 +146,26 @@ def scenes(variant):
         "volpath": pools_scene(VOLPATH, 16),
         "split": pools_scene(split_integrator(12, 5), 16),
         "emitted": pools_scene({"type": "path", "max_depth": 1}, 4),  # directly seen radiance
+        # A two-pass frame (render.in_water_fraction < 1), with Russian roulette from the
+        # second vertex (render.roulette_depth = 2): the scene's integrator has every lobe but
+        # the transmitted one, which the second integrator renders alone.
+        "reflection": pools_scene(split_integrator(12, 2, lobes="reflection"), 16),
+        "transmission": mi.load_dict(split_integrator(12, 2, lobes="transmission")),
     }
 
 
 def split_and_volpath(scenes):
     return {name: scenes[name] for name in ("volpath", "split")}
+
+
+def two_pass_renders(scenes, seeds, spp, in_water_spp):
+    """(reflection pass, transmission pass) films of the pools, as ``WaterRenderer`` makes them."""
+    import mitsuba as mi
+
+    scene = scenes["reflection"]
+    transmitted = np.stack([np.array(mi.render(scene, integrator=scenes["transmission"], seed=int(s) + 7919,
+                                               spp=in_water_spp)) for s in seeds])
+    return renders(scene, seeds, spp), transmitted
 
 
 @pytest.mark.parametrize(
@@ -176,6 +194,27 @@ def test_split_has_the_same_expectation_as_volpath(scenes, camera, sun, albedo, 
     assert np.all(Z_MAX * np.hypot(errors["split"], errors["volpath"]) < 0.025 * means["volpath"]), errors
 
 
+def test_two_passes_with_early_roulette_have_the_expectation_of_one(scenes):
+    # Pools in the shade, bright scattering water: the transmitted lobe carries much of the
+    # image. The in-water pass gets a quarter of the samples (render.in_water_fraction 0.25)
+    # and both passes roulette from the second vertex; their sum must estimate the image of
+    # the one-pass split integrator with roulette after 5 (an independent estimator).
+    for name in ("split", "reflection"):
+        configure(scenes[name], LOOK_NORTH, LOW_SUN, albedo=0.8, sigma_t=0.3)
+    one_mean, one_se = image_mean_and_standard_error(renders(scenes["split"], seeds=range(4), spp=128))
+    reflected, transmitted = two_pass_renders(scenes, seeds=range(20, 24), spp=128, in_water_spp=32)
+    r_mean, r_se = image_mean_and_standard_error(reflected)
+    t_mean, t_se = image_mean_and_standard_error(transmitted)
+    # The passes are independent renders (own seeds): their standard errors add in quadrature.
+    two_se = np.hypot(r_se, t_se)
+    z = (r_mean + t_mean - one_mean) / np.hypot(one_se, two_se)
+    assert np.all(np.abs(z) < Z_MAX), f"z = {z}, one pass {one_mean} ± {one_se}, two {r_mean + t_mean} ± {two_se}"
+    # Sensitivity: a bias of 2.5 % of the image would be seen; and the transmitted pass is a
+    # sizeable part of it here (a test that left it out would fail).
+    assert np.all(Z_MAX * np.hypot(one_se, two_se) < 0.025 * one_mean), (one_se, two_se)
+    assert np.all(t_mean > 10 * Z_MAX * np.hypot(one_se, two_se)), (t_mean, one_se, two_se)
+
+
 def test_split_reduces_the_noise_of_the_reflected_sky(scenes):
     # Pools in the shade, dark water: what the camera sees is mostly reflected sky,
     # which volpath estimates from the F ≈ 2-8 % of samples that choose reflection.
@@ -194,9 +233,12 @@ def test_a_ray_that_misses_the_water_returns_the_sky_radiance(scenes):
     # which draws the same random numbers: those images agree too.
     looking_up = ((0.0, 0.0, 2.0), (0.0, 3.0, 4.0))
     films = {}
-    for name, scene in scenes.items():
-        configure(scene, looking_up, SUN, albedo=0.8)
-        films[name] = renders(scene, seeds=(5,), spp=4)
+    for name in ("volpath", "split", "emitted", "reflection"):
+        configure(scenes[name], looking_up, SUN, albedo=0.8)
+        films[name] = renders(scenes[name], seeds=(5,), spp=4)
+    # The in-water pass of a two-pass frame adds nothing where no camera ray meets the water.
+    assert np.all(two_pass_renders(scenes, seeds=(5,), spp=4, in_water_spp=1)[1] == 0.0)
+    np.testing.assert_allclose(films["reflection"], films["emitted"], rtol=ROUNDOFF32)
     assert films["emitted"].min() > 0
     # float32 films from differently compiled kernels (FMA contraction may differ): pixels > 0.
     np.testing.assert_allclose(films["split"], films["emitted"], rtol=ROUNDOFF32)
@@ -216,3 +258,7 @@ def test_split_integrator_entry_and_registration(variant):
         split_integrator(-2)
     with pytest.raises(ValueError):
         split_integrator(12, rr_depth=0)
+    assert split_integrator(12, lobes="transmission")["lobes"] == "transmission"
+    assert "lobes" not in split_integrator(12, lobes="both")
+    with pytest.raises(ValueError, match="lobes"):
+        split_integrator(12, lobes="refraction")
