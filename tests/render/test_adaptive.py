@@ -1,6 +1,5 @@
 """Adaptive sampling (render/adaptive.py): the allocation rules, and a real adaptive frame."""
 
-import colour
 import numpy as np
 import pytest
 
@@ -13,7 +12,7 @@ from oceanrender.render.adaptive import (
 )
 from oceanrender.render.pixels import PixelSampler
 from oceanrender.render.renderer import K_M
-from oceanrender.render.scene import CIE1931, xyz_film
+from tests.render.constant_sky import cmf_integrals, constant_sky_scene
 from tests.tolerances import ROUNDOFF
 
 
@@ -67,15 +66,7 @@ def test_an_adaptive_frame_spends_its_budget_where_the_error_is(variant):
     # A constant sky seen by a real PixelSampler; the caller's error measure says the left half
     # is 4× as noisy as the right (a weighted half difference). With the budget binding, the
     # mean-error optimum gives the left ≈ 4^(2/3) = 2.5× the samples of the right.
-    import mitsuba as mi
-
-    scene = mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": 1},
-        "sensor": {"type": "perspective", "film": xyz_film(16, 8),
-                   "sampler": {"type": "independent", "sample_count": 4}},
-        "environment": {"type": "constant", "radiance": {"type": "spectrum", "value": 1.0}},
-    })
+    scene = constant_sky_scene(16, 8, 4)
     weight = np.ones((8, 16))
     weight[:, :8] = 4.0
 
@@ -92,5 +83,4 @@ def test_an_adaptive_frame_spends_its_budget_where_the_error_is(variant):
     assert 1.8 < ratio < 3.5, ratio
     # The frame is still the sky's: K_m ∫ȳ dλ (CIE 015:2018 Eq. 7.1) within the Monte Carlo error
     # of 4096 spectral samples (≲ 1 %).
-    cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(360, 830, 1))
-    assert result.image()[..., 1].mean() == pytest.approx(K_M * cmfs.values[:, 1].sum(), rel=0.02)
+    assert result.image()[..., 1].mean() == pytest.approx(K_M * cmf_integrals()[1], rel=0.02)

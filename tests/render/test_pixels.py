@@ -1,12 +1,11 @@
 """Samples for chosen pixels (render/pixels.py): counts honoured, halves independent, film units exact."""
 
-import colour
 import numpy as np
 import pytest
 
 from oceanrender.render.pixels import PixelSampler, PixelSums
 from oceanrender.render.renderer import K_M
-from oceanrender.render.scene import CIE1931, xyz_film
+from tests.render.constant_sky import cmf_integrals, constant_sky_scene
 
 
 def test_samples_alternate_between_the_halves_per_pixel():
@@ -33,19 +32,12 @@ def test_pixel_sampler_develops_the_film_as_specfilm_does(variant):
     # K_m ∫x̄ dλ, K_m ∫ȳ dλ, K_m ∫z̄ dλ (CIE 015:2018 Eq. 7.1) over the film's 360–830 nm.
     import mitsuba as mi
 
-    scene = mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": 1},
-        "sensor": {"type": "perspective", "film": xyz_film(16, 8),
-                   "sampler": {"type": "independent", "sample_count": 4}},
-        "environment": {"type": "constant", "radiance": {"type": "spectrum", "value": 1.0}},
-    })
+    scene = constant_sky_scene(16, 8, 4)
     sampler = PixelSampler(scene, lanes=4096)
     counts = np.tile([64, 192], (8, 8))  # 16 px wide: alternate columns get 64 and 192 samples
     sums = sampler.render(counts, seed=11)
     np.testing.assert_array_equal(sums.per_pixel_counts(), counts)
-    cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(360, 830, 1))
-    expected = K_M * cmfs.values.sum(axis=0)  # Δλ = 1 nm
+    expected = K_M * cmf_integrals()
     # 16 384 samples of 4 wavelengths each: the spectral Monte Carlo error of the mean is ≲ 0.5 %
     # (z̄, the peakiest, measured 1.2 % at 2048 samples).
     np.testing.assert_allclose(sums.image().reshape(-1, 3).mean(axis=0), expected, rtol=0.01)

@@ -10,14 +10,10 @@ from oceanrender.render.renderer import K_M, adapting_white_XYZ, repair_non_fini
 from oceanrender.render.scene import CIE1931, perspective_sensor, sun_direction, sunsky_emitter, xyz_film
 from oceanrender.scene import scene_from_dict
 from oceanrender.vision.model import VisionModel
+from tests.render.constant_sky import cmf_integrals, constant_sky_scene
 from tests.tolerances import ROUNDOFF
 
 pytestmark = pytest.mark.render
-
-
-def cmf_integrals():
-    cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(360, 830, 1))
-    return cmfs.values.sum(axis=0)  # Δλ = 1 nm
 
 
 def test_sun_direction_convention():
@@ -33,13 +29,7 @@ def test_film_integrates_radiance_against_the_cmfs(variant):
     # X, Y, Z = ∫x̄ dλ, ∫ȳ dλ, ∫z̄ dλ ≈ 106.86 over 360-830 nm (exact XYZ, not RGB-derived).
     import mitsuba as mi
 
-    scene = mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": 1},
-        "sensor": {"type": "perspective", "film": xyz_film(32, 32),
-                   "sampler": {"type": "independent", "sample_count": 64}},
-        "environment": {"type": "constant", "radiance": {"type": "spectrum", "value": 1.0}},
-    })
+    scene = constant_sky_scene(32, 32, 64)
     film = np.array(mi.render(scene, seed=3))
     measured = film.reshape(-1, 3).mean(axis=0)
     # 65 536 spectral samples per channel: Monte Carlo error ≲ 0.5 %.
