@@ -1,22 +1,26 @@
 """Time to quality: seconds and samples per pixel → ΔE00 against a high-spp reference (issue 16).
 
 Run: ``.venv/bin/python benchmarks/bench_quality.py [--scenes open_ocean,coastal_beach,turbid_estuary]
-[--resolution 128x72] [--reference-spp 1024] [--max-spp 256] [--hd-spp 16] [--variant auto]``
-(≈ 25–40 min on 2 cores at the defaults; ``--variant cuda_ad_spectral`` runs the same curves on a GPU).
-Prints Markdown tables (BENCHMARKS.md, "Time to quality").
+[--resolution 320x180] [--reference-spp 1024] [--max-spp 256] [--hd-spp 64] [--hd-reference-spp 1024]
+[--variant auto]`` (BENCHMARKS.md gives the arguments of the recorded runs and their times;
+``--variant cuda_ad_spectral`` runs the same curves on a GPU). Prints Markdown tables, each scene's as
+soon as it is done.
 
 Method
 ------
-* Per scene (frame 0, ``--resolution``) three integrator settings in the same run, on the same
-  geometry: **tuned** (the scene file's ``[render]``: for the default scene two passes with the
-  in-water lobe at a fraction of the samples, and Russian roulette from the second vertex),
+* Per scene (frame 0, ``--resolution``) four settings in the same run, on the same geometry:
+  **tuned** (the scene file's ``[render]``; for the default scene two passes with the in-water lobe at
+  ``in_water_fraction`` of the samples), **adaptive** (the tuned integrators rendered by
+  :func:`oceanrender.render.adaptive.render_adaptive`, a quarter of the budget uniform first),
   **before** (``split`` as it was before issue 16: one pass, ``in_water_fraction = 1``,
-  ``roulette_depth = 5``) and plain Mitsuba **volpath** (``roulette_depth = 5``).
-* Reference: the *tuned* integrator at ``--reference-spp``, as the mean of independent 64-spp renders
-  (seeds 10 000 …). All three settings are unbiased estimators of the same image (tested in
-  ``tests/render/test_passes.py`` and ``tests/render/test_integrator.py``), so one reference serves all.
-  Its own noise is estimated from its two halves: the error of the full reference ≈ ΔE00(A, B) / 2
-  for noise-dominated differences (σ of A − B is 2× that of the mean of A and B).
+  ``roulette_depth = 5``; left out where the scene file has those settings) and plain Mitsuba
+  **volpath** (``roulette_depth = 5``).
+* Reference: the scene file's settings without the in-water clamp (:data:`REFERENCE`), at
+  ``--reference-spp`` (× :data:`REFERENCE_SHARE` per scene), as the mean of independent 64-spp renders
+  (seeds 10 000 … and 20 000 …). All settings but a clamped one estimate the same image without bias
+  (tested in ``tests/render/test_integrator.py``), so one reference serves all. Its own error is
+  estimated from its two halves: ≈ ΔE00(A, B) / 2 for noise-dominated differences (σ of A − B is
+  2× that of the mean of A and B).
 * Estimates at 16, 32 … ``--max-spp`` spp, built as means of independent 16- or 64-spp renders (the
   mean of k independent n-spp renders of a box-filtered film is distributed as one k·n-spp render, and
   every new spp value costs Mitsuba a JIT compilation). Time = the wall time of those renders, measured
@@ -24,14 +28,14 @@ Method
 * Error: each image → Φ (the scene's vision model, issue 15) with the **reference's** adapting white and
   adaptation luminance → linear display sRGB → clipped to the display → CIELAB (D65) → CIEDE2000
   (colour-science) against the reference, per pixel; mean and 95th percentile over all pixels and over
-  the pixels whose reference is not clipped (all display channels < 1).
+  the pixels whose reference is not clipped (all display channels < 1); and mean Y / the reference's.
 * Denoised: OIDN ``RT`` colour only, and with the first hit's albedo and normal
   (:class:`~oceanrender.render.denoise.FeatureRenderer`, its own 16-spp render, timed).
 * Time to a given error: log–log interpolation along each curve; beyond a curve's end, the noisy
-  curves are extended with the Monte-Carlo law ΔE ∝ t^(−1/2) fitted to their last two points.
-* 1280×720: one frame of the first scene with the tuned settings at ``--hd-spp`` (timed, and its noise
-  estimated from two independent half-spp frames, which the low-resolution curve predicts at the same
-  spp), so the low-resolution curve is extrapolated by pixel count only where that is measured.
+  curves are extended with the Monte-Carlo law ΔE ∝ t^(−1/2) from their last point.
+* 1280×720: an unbiased 1280×720 reference (``--hd-reference-spp``) and one frame of the first scene as
+  the pipeline makes it (tuned, ``--hd-spp``, OIDN), timed, with its errors also given less the
+  reference's own (in quadrature).
 """
 
 from __future__ import annotations
@@ -43,7 +47,6 @@ import sys
 import tempfile
 import time
 import warnings
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -72,13 +75,6 @@ REFERENCE_SHARE = {"turbid_estuary": 0.25, "coastal_beach": 0.5}
 #: Per-pixel ΔE00 the adaptive passes aim at: below what any budget here reaches, so the budget decides
 #: how many samples are spent and the error estimates decide where.
 ADAPTIVE_TARGET = 0.5
-
-
-@dataclass
-class Estimate:
-    spp: int
-    seconds: float
-    image: np.ndarray
 
 
 def chunked_render(renderer, spp: int, seed: int) -> tuple[np.ndarray, float]:

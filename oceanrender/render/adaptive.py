@@ -3,8 +3,8 @@
 A frame is rendered in passes by :class:`~oceanrender.render.pixels.PixelSampler`.
 Each pixel's samples alternate between two halves A and B, so the halves are
 independent estimates and the error of their mean is estimated per pixel from
-their difference, in whatever measure the caller gives (the pipeline uses
-ΔE00 after the vision model: ``error_of(A, B)``). For unbiased Monte Carlo the
+their difference, in whatever measure the caller gives (``benchmarks/bench_quality.py``
+uses ΔE00 after the vision model: ``error_of(A, B)``). For unbiased Monte Carlo the
 error of an n-sample mean falls as n^(−1/2) (e.g. Pharr, Jakob & Humphreys 2016,
 *PBRT* 3rd ed., §13.11 "adaptive sampling", and Rousselle, Knaus & Zwicker 2011,
 doi:10.1145/2070781.2024193, who drive sample density by estimated error), so a

@@ -79,7 +79,8 @@ def split_integrator(max_depth: int, rr_depth: int = 5, sun=None, water_ior: flo
                              ``"reflection"``: every sample *except* the transmitted lobe (camera rays
                              that are not split included); ``"transmission"``: the transmitted lobe
                              alone (0 elsewhere). The two passes add up to ``"both"`` in expectation,
-                             so each can be given its own sample count (:mod:`oceanrender.render.passes`).
+                             so each can be given its own sample count
+                             (:meth:`oceanrender.render.renderer.WaterRenderer.render_xyz`).
 
     Call :func:`register` (after the variant is set) before loading the scene.
     """

@@ -25,13 +25,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .renderer import K_M
 from .scene import cmf_response_spectra
 
 #: Sample slots per kernel launch [-]: one compiled kernel for every pass (2¹⁷, ≈ 0.4 s here).
 LANES = 1 << 17
-
-#: Maximum luminous efficacy [lm W⁻¹] (CIE 015:2018 Eq. 7.1), as in ``renderer.K_M``.
-_K_M = 683.0
 
 
 @dataclass
@@ -129,7 +127,7 @@ class PixelSampler:
             channels.append(sum(weights[i] * values[i] for i in range(len(values))) / len(values))
         dr.eval(*channels)  # one kernel for all three (each np.array() alone would trace the path again)
         out = np.stack([np.array(c) for c in channels], axis=-1)[:n]
-        return _K_M * out.astype(np.float64)
+        return K_M * out.astype(np.float64)
 
     def render(self, counts: np.ndarray, seed: int, into: PixelSums | None = None) -> PixelSums:
         """Add ``counts`` (H, W) samples per pixel [-] to ``into`` (a new :class:`PixelSums` if None).
