@@ -16,6 +16,7 @@ import numpy as np
 
 from . import __version__
 from .io.frames import frame_is_complete, write_exr, write_png
+from .io.paths import remove_stale_temporaries
 from .optics.scene_water import water_optics
 from .render.renderer import WaterRenderer, adapting_white_XYZ
 from .scene import Scene
@@ -406,14 +407,6 @@ def write_frame(paths: FramePaths, rendered: RenderedFrame) -> float:
     write_exr(paths.exr, rendered.channels, rendered.metadata)
     write_png(paths.png, rendered.rgb8)
     return time.perf_counter() - tic
-
-
-def remove_stale_temporaries(out_dir: str | Path) -> list[Path]:
-    """Delete temporary frame files a killed run left behind (``.frame_*.tmp*``)."""
-    stale = sorted(Path(out_dir).glob(".frame_*.tmp*")) if Path(out_dir).is_dir() else []
-    for path in stale:
-        path.unlink(missing_ok=True)
-    return stale
 
 
 def spectral_frame(band_integrals: np.ndarray, metadata: dict) -> tuple[dict[str, np.ndarray], dict]:

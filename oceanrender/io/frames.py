@@ -2,13 +2,15 @@
 
 Every file is written to a temporary name in the same folder and renamed
 into place (``os.replace`` is atomic on POSIX), so a killed run never leaves
-a half-written frame under a final name.
+a half-written frame under a final name. The temporary name carries this host
+and process (:func:`oceanrender.io.paths.temporary_name`), so a second run on
+the same folder never takes it for a leftover, and the file gets the mode the
+umask gives (not ``mkstemp``'s 0600), so a shared output folder stays readable.
 """
 
 from __future__ import annotations
 
 import os
-import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator, Mapping
@@ -16,6 +18,8 @@ from typing import Iterator, Mapping
 import imageio.v3 as iio
 import numpy as np
 import OpenEXR
+
+from .paths import temporary_name, umask_mode
 
 #: Channels of every frame EXR, in order: absolute CIE 1931 XYZ [cd m⁻² for Y]
 #: and linear display sRGB after the vision model [display-relative, 1 = white].
@@ -27,11 +31,11 @@ def atomic_path(path: str | Path, suffix: str) -> Iterator[Path]:
     """Yield a temporary path next to ``path``; rename it onto ``path`` on success."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=f".tmp{suffix}", dir=path.parent)
-    os.close(fd)
-    tmp_path = Path(tmp)
+    tmp_path = path.parent / temporary_name(path.stem, suffix)
+    os.close(os.open(tmp_path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
     try:
         yield tmp_path
+        os.chmod(tmp_path, umask_mode())
         os.replace(tmp_path, path)
     finally:
         if tmp_path.exists():

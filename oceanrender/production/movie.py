@@ -20,7 +20,6 @@ missing frame.
 from __future__ import annotations
 
 import math
-import os
 import re
 import time
 from dataclasses import dataclass
@@ -45,13 +44,6 @@ COLOUR_OPTIONS = (
     "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "iec61966-2-1", "-color_range", "tv",
     "-movflags", "+faststart",
 )
-
-
-def _readable(path: Path) -> None:
-    """Give a temporary file the mode a plain ``open()`` would (mkstemp makes it 0600)."""
-    mask = os.umask(0)
-    os.umask(mask)
-    os.chmod(path, 0o666 & ~mask)
 
 
 class SequenceError(ValueError):
@@ -221,7 +213,6 @@ def write_movie(frames_dir: str | Path, out_path: str | Path, fps: float, expect
                 writer.append_data(pad_to_even(frame))
         finally:
             writer.close()
-        _readable(tmp)
     return MovieReport(path=Path(out_path), frames=len(sequence), first_frame=sequence.numbers[0], fps=float(fps),
                        size=(width + width % 2, height + height % 2), padded=bool(width % 2 or height % 2),
                        duration=len(sequence) / float(fps), seconds=time.perf_counter() - tic)
@@ -349,6 +340,5 @@ def write_contact_sheet(frames_dir: str | Path, out_path: str | Path, columns: i
                       font=font)
     with atomic_path(out_path, ".png") as tmp:
         sheet.save(tmp, format="PNG")
-        _readable(tmp)
     return ContactSheetReport(path=Path(out_path), layout=layout,
                               frames=tuple(sequence.numbers[i] for i in chosen))

@@ -1,5 +1,7 @@
 """Frame files: atomic writes, round trips and the resume check."""
 
+import os
+
 import numpy as np
 import pytest
 
@@ -44,3 +46,15 @@ def test_frame_complete_only_when_both_files_read_back(tmp_path, rng):
 def test_png_must_be_8_bit(tmp_path):
     with pytest.raises(TypeError, match="uint8"):
         write_png(tmp_path / "x.png", np.zeros((2, 2, 3), dtype=np.float32))
+
+
+@pytest.mark.parametrize("mask, mode", [(0o022, 0o644), (0o027, 0o640)])
+def test_frames_honour_the_umask(tmp_path, mask, mode):
+    """Atomic writes go through a private temporary; the final file still gets the umask's mode."""
+    old = os.umask(mask)
+    try:
+        write_png(tmp_path / "f.png", np.zeros((2, 3, 3), np.uint8))
+        write_exr(tmp_path / "f.exr", {name: np.zeros((2, 3), np.float32) for name in FRAME_CHANNELS})
+    finally:
+        os.umask(old)
+    assert {p.name: p.stat().st_mode & 0o777 for p in tmp_path.iterdir()} == {"f.png": mode, "f.exr": mode}
