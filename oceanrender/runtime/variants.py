@@ -5,7 +5,9 @@ Mitsuba's JIT variants need a backend: ``cuda_*`` a working NVIDIA driver,
 whole process (``LLVM ERROR: Cannot select: ... fminimum``) with Debian's
 libLLVM 14 and 15, so a variant is only trusted after a tiny render has
 succeeded in a *child* process; the verdict is cached per machine
-configuration. ``scalar_spectral`` needs neither backend and is the last resort.
+configuration. The scalar variants are not offered: the split integrator and
+the per-frame mesh updates use vectorised drjit arrays, which only the JIT
+backends have, so ``scalar_spectral`` fails on the shipped scenes.
 
 Nothing here runs at import time: the CLI (or a test) calls
 :func:`activate_variant` once.
@@ -19,12 +21,15 @@ import os
 import re
 import subprocess
 import sys
-import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
-#: Order of preference of the spectral variants [1]: GPU, CPU JIT, CPU scalar.
-SPECTRAL_VARIANTS = ("cuda_ad_spectral", "llvm_ad_spectral", "scalar_spectral")
+#: Order of preference of the spectral variants [1]: GPU, CPU JIT. These are the only ones supported.
+SPECTRAL_VARIANTS = ("cuda_ad_spectral", "llvm_ad_spectral")
+
+#: Why a scalar variant is refused (one line, for the user).
+SCALAR_REFUSAL = ("is not supported: the renderer needs a JIT backend (cuda_ad_spectral with an NVIDIA driver, or "
+                  "llvm_ad_spectral with libLLVM ≥ 16: apt-get install libllvm19)")
 
 #: Oldest LLVM major version that drjit 1.5 was seen to drive correctly here.
 MIN_LLVM_MAJOR = 16
@@ -185,8 +190,8 @@ def activate_variant(requested: str = "auto") -> RuntimeInfo:
     Parameters
     ----------
     requested : str
-        ``"auto"`` (cuda_ad_spectral, then llvm_ad_spectral, then
-        scalar_spectral) or one variant name, which is then required.
+        ``"auto"`` (cuda_ad_spectral, then llvm_ad_spectral) or one of
+        :data:`SPECTRAL_VARIANTS`, which is then required.
 
     Returns
     -------
@@ -202,12 +207,14 @@ def activate_variant(requested: str = "auto") -> RuntimeInfo:
     known = mi.variants()
     if requested != "auto" and requested not in known:
         raise VariantError(f"unknown Mitsuba variant {requested!r}; expected 'auto' or one of {', '.join(known)}")
+    if requested != "auto" and requested not in SPECTRAL_VARIANTS:
+        raise VariantError(f"variant {requested!r} {SCALAR_REFUSAL}" if requested.startswith("scalar") else
+                           f"variant {requested!r} is not supported; expected 'auto' or one of "
+                           f"{', '.join(SPECTRAL_VARIANTS)}")
     llvm = find_llvm_library()
     tried: list[tuple[str, str]] = []
     for variant in candidate_variants(requested):
-        if variant.startswith("scalar"):
-            verdict = "ok"
-        elif variant.startswith("cuda") and not cuda_driver_present():
+        if variant.startswith("cuda") and not cuda_driver_present():
             verdict = "no NVIDIA driver (libcuda) found"
         elif variant.startswith("llvm") and llvm is None:
             verdict = f"no libLLVM ≥ {MIN_LLVM_MAJOR} found (apt-get install libllvm19)"
@@ -219,12 +226,5 @@ def activate_variant(requested: str = "auto") -> RuntimeInfo:
         if variant.startswith("llvm") and llvm:
             os.environ["DRJIT_LIBLLVM_PATH"] = llvm
         mi.set_variant(variant)
-        if requested == "auto" and variant == "scalar_spectral":
-            warnings.warn(
-                "falling back to the slow scalar_spectral variant: "
-                + "; ".join(f"{v}: {why}" for v, why in tried[:-1]),
-                RuntimeWarning,
-                stacklevel=2,
-            )
         return RuntimeInfo(variant=variant, llvm_library=llvm if variant.startswith("llvm") else None, tried=tuple(tried))
     raise VariantError("no usable Mitsuba variant: " + "; ".join(f"{v}: {why}" for v, why in tried))
