@@ -14,6 +14,9 @@ import numpy as np
 #: Folder of the project's spectral tables (``spectra/`` at the repository root).
 SPECTRA_DIR = Path(__file__).resolve().parents[2] / "spectra"
 
+#: Largest spectral table accepted [bytes] (the project's are below 100 kB).
+MAX_TABLE_BYTES = 16 << 20
+
 #: The wavelength range every rendered spectrum must cover [nm] (CIE 1931 CMFs).
 VISIBLE_RANGE_NM = (360.0, 830.0)
 
@@ -66,20 +69,26 @@ def read_spectral_table(path: str | Path, required: tuple[str, ...] = (), cover:
     cover : (float, float)
         Wavelength range [nm] the table must span.
     """
+    from ..io.paths import PathProblem, check_input_file  # noqa: PLC0415
+
     path = Path(path)
-    if not path.is_absolute() and not path.exists():
-        path = SPECTRA_DIR / path
+    if not path.is_absolute() and len(path.parts) == 1:
+        path = SPECTRA_DIR / path  # a bare name is one of the project's tables
     try:
-        lines = path.read_text(encoding="utf-8").splitlines()
-    except OSError as exc:
-        raise SpectralDataError(f"{path}: cannot read spectral table ({exc.strerror or exc})") from None
+        path = check_input_file(path, MAX_TABLE_BYTES)
+        lines = path.read_bytes().decode("utf-8").splitlines()
+    except (PathProblem, OSError, UnicodeDecodeError) as exc:
+        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
+        if isinstance(exc, UnicodeDecodeError):
+            reason = f"not UTF-8 text (byte {exc.start})"
+        raise SpectralDataError(f"{str(path)[:300]}: cannot read spectral table ({reason})") from None
     header = [line[1:].strip() for line in lines if line.startswith("#")]
     if len(header) < 2:
         raise SpectralDataError(f"{path}: a spectral table needs a '#' header with units and source")
     names = header[-1].split(",")
     try:
         data = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
-    except ValueError as exc:
+    except (ValueError, IndexError) as exc:
         raise SpectralDataError(f"{path}: malformed numbers ({exc})") from None
     if data.shape[1] != len(names):
         raise SpectralDataError(f"{path}: {data.shape[1]} columns but the header names {len(names)}")

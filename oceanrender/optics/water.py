@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .tables import read_spectral_table
+from .tables import SpectralDataError, read_spectral_table
 
 
 @dataclass(frozen=True)
@@ -41,6 +41,21 @@ class WaterIOPs:
         return self.scattering / self.attenuation
 
 
+#: Largest absorption or scattering coefficient accepted in a table [m⁻¹]: a hundred times the
+#: attenuation of very turbid estuaries (order 100 m⁻¹); the bound refuses nonsense, not water.
+MAX_IOP_PER_M = 1.0e4
+
+
+def check_iop_values(table: str, absorption: np.ndarray, scattering: np.ndarray) -> None:
+    """Refuse a, b that no water has: a > 0 (all water absorbs), b ≥ 0, both ≤ :data:`MAX_IOP_PER_M` [m⁻¹]."""
+    if not (np.all(absorption > 0) and np.all(absorption <= MAX_IOP_PER_M)):
+        raise SpectralDataError(f"{table}: a_per_m must lie in (0, {MAX_IOP_PER_M:g}] m⁻¹ at every wavelength "
+                                f"(water always absorbs), got {absorption.min():g} to {absorption.max():g}")
+    if not (np.all(scattering >= 0) and np.all(scattering <= MAX_IOP_PER_M)):
+        raise SpectralDataError(f"{table}: b_per_m must lie in [0, {MAX_IOP_PER_M:g}] m⁻¹ at every wavelength, "
+                                f"got {scattering.min():g} to {scattering.max():g}")
+
+
 def pure_seawater_iops(table: str = "pure_seawater.csv") -> WaterIOPs:
     """IOPs of pure sea water from a table in ``spectra/`` [m⁻¹].
 
@@ -48,6 +63,7 @@ def pure_seawater_iops(table: str = "pure_seawater.csv") -> WaterIOPs:
     Morel (1974) scattering; see its header and ``spectra/make_pure_seawater.py``.
     """
     data = read_spectral_table(table, required=("a_per_m", "b_per_m"))
+    check_iop_values(table, data.columns["a_per_m"], data.columns["b_per_m"])
     return WaterIOPs(
         wavelengths=data.wavelengths,
         absorption=data.columns["a_per_m"],

@@ -19,16 +19,86 @@ from numpy.typing import NDArray
 
 #: EXR channels tried, in order, for a single-valued array.
 EXR_CHANNELS = ("Z", "Y", "R", "V")
+#: Largest array file a scene may name [bytes] (a 16384² float64 grid is 2 GiB).
+MAX_ARRAY_BYTES = 2 << 30
+#: Most elements an array file may hold (its header is read, and checked, before its data).
+MAX_ARRAY_ELEMENTS = 16384 * 16384
 
 
-def read_array(path: str | Path) -> NDArray[np.float64]:
-    """A 2-D float array from a ``.npy`` file or the first of Z/Y/R/V in an EXR [file units: m]."""
-    path = Path(path)
+def check_npy_header(path: Path, shape: tuple[int, int] | None = None) -> None:
+    """Check a ``.npy`` header before reading its data: 2-D, plain numbers, a size the file holds.
+
+    The header (NumPy's format, ``numpy.lib.format``) names dtype and shape; a
+    file whose header claims more data than it holds, a structured or object
+    dtype, or a shape other than ``shape`` (ny, nx) is refused with ValueError
+    before any allocation.
+    """
+    fmt = np.lib.format
+    with open(path, "rb") as handle:
+        try:
+            version = fmt.read_magic(handle)
+            read_header = {(1, 0): fmt.read_array_header_1_0, (2, 0): fmt.read_array_header_2_0}.get(version)
+            if read_header is None:
+                raise ValueError(f"unsupported .npy format version {version}")
+            header_shape, _fortran, dtype = read_header(handle)
+        except (ValueError, EOFError, SyntaxError, TypeError) as exc:
+            raise ValueError(f"not a readable .npy file ({str(exc).splitlines()[0] if str(exc) else 'bad header'})") \
+                from None
+        data_offset = handle.tell()
+    if dtype.fields is not None or dtype.subdtype is not None or dtype.kind not in "fiu":
+        raise ValueError(f"expected an array of real numbers (float or int), got dtype {dtype}")
+    if len(header_shape) != 2:
+        raise ValueError(f"expected a 2-D array, got shape {header_shape}")
+    if shape is not None and tuple(header_shape) != tuple(shape):
+        raise ValueError(f"expected shape (ny, nx) = {tuple(shape)} to match [coastal] cells, got {header_shape}")
+    elements = int(header_shape[0]) * int(header_shape[1])
+    if elements > MAX_ARRAY_ELEMENTS:
+        raise ValueError(f"expected at most {MAX_ARRAY_ELEMENTS} elements, the header claims {elements}")
+    if path.stat().st_size - data_offset != elements * dtype.itemsize:
+        raise ValueError(f"the file holds {path.stat().st_size - data_offset} bytes of data, its header claims "
+                         f"{elements * dtype.itemsize} (truncated or padded)")
+
+
+def check_exr_header(path: Path, shape: tuple[int, int] | None = None) -> None:
+    """Check an EXR's data window before reading its pixels: at most :data:`MAX_ARRAY_ELEMENTS`, ``shape``."""
+    import OpenEXR  # noqa: PLC0415
+
+    try:
+        with OpenEXR.File(str(path), header_only=True) as exr:
+            window = exr.header().get("dataWindow")
+    except Exception as exc:  # noqa: BLE001 (OpenEXR raises RuntimeError or its own types on a bad file)
+        raise ValueError(f"not a readable EXR file ({str(exc).splitlines()[0] if str(exc) else 'bad header'})") \
+            from None
+    if window is None:
+        raise ValueError("not a readable EXR file (no data window)")
+    (x0, y0), (x1, y1) = (tuple(int(v) for v in corner) for corner in window)
+    size = (y1 - y0 + 1, x1 - x0 + 1)
+    if size[0] * size[1] > MAX_ARRAY_ELEMENTS:
+        raise ValueError(f"expected at most {MAX_ARRAY_ELEMENTS} pixels, the header claims {size[0] * size[1]}")
+    if shape is not None and size != tuple(shape):
+        raise ValueError(f"expected shape (ny, nx) = {tuple(shape)} to match [coastal] cells, got {size}")
+
+
+def read_array(path: str | Path, shape: tuple[int, int] | None = None) -> NDArray[np.float64]:
+    """A 2-D float array from a ``.npy`` file or the first of Z/Y/R/V in an EXR [file units: m].
+
+    The file is checked first (:func:`oceanrender.io.paths.check_input_file`:
+    a regular readable file under :data:`MAX_ARRAY_BYTES`), then its header
+    (dtype, 2-D, ``shape`` if given, the data it claims), then read.
+    """
+    from ..io.paths import PathProblem, check_input_file  # noqa: PLC0415
+
+    try:
+        path = check_input_file(path, MAX_ARRAY_BYTES)
+    except PathProblem as exc:
+        raise ValueError(str(exc)) from None
     if path.suffix.lower() == ".npy":
+        check_npy_header(path, shape)
         array = np.load(path, allow_pickle=False)
     else:
         from ..io.frames import read_exr  # noqa: PLC0415
 
+        check_exr_header(path, shape)
         channels, _ = read_exr(path)
         name = next((c for c in EXR_CHANNELS if c in channels), None)
         if name is None:
@@ -79,7 +149,7 @@ def bathymetry(coastal) -> NDArray[np.float64]:
     if coastal.bathymetry == "plane beach":
         x, y = coastal_cell_centres(coastal)
         return plane_beach(y, x, coastal.still_level, coastal.shoreline_y, coastal.slope, coastal.offshore_depth)
-    return check_array(read_array(coastal.bathymetry), coastal.shape)
+    return check_array(read_array(coastal.bathymetry, coastal.shape), coastal.shape)
 
 
 def initial_depth(coastal, bed: NDArray) -> NDArray[np.float64]:
@@ -87,7 +157,7 @@ def initial_depth(coastal, bed: NDArray) -> NDArray[np.float64]:
     if coastal.initial_surface == "still":
         eta = np.full(bed.shape, coastal.still_level)
     else:
-        eta = check_array(read_array(coastal.initial_surface), coastal.shape)
+        eta = check_array(read_array(coastal.initial_surface, coastal.shape), coastal.shape)
     return np.maximum(eta - bed, 0.0)
 
 
@@ -103,10 +173,8 @@ def check_coastal_inputs(coastal) -> None:
         value = getattr(coastal, key)
         if value in ("plane beach", "still"):
             continue
-        if not Path(value).is_file():
-            raise ValueError(f"{key}: file not found: {value}")
         try:
-            check_array(read_array(value), coastal.shape)
+            check_array(read_array(value, coastal.shape), coastal.shape)
         except (OSError, ValueError, RuntimeError) as exc:
             raise ValueError(f"{key}: {value}: {exc}") from None
     bed = bathymetry(coastal)

@@ -13,6 +13,8 @@ file (converted where used), wind in m s⁻¹, luminance in cd m⁻².
 from __future__ import annotations
 
 import math
+import os
+import re
 
 import tomllib
 from pathlib import Path
@@ -20,13 +22,28 @@ from typing import Annotated, Literal
 
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from ..runtime.variants import SPECTRAL_VARIANTS
+
 
 class SceneError(ValueError):
     """A scene file that cannot be used; the message is one line for the user."""
 
 
+#: Largest sampler/wave seed: Mitsuba's samplers take a 32-bit unsigned seed.
+SEED_MAX = (1 << 32) - 1
+#: Most frames one run may hold (69 min at 24 fps): every frame is validated (camera path, sun) at load.
+MAX_FRAME_COUNT = 100_000
+#: Largest frame number [-] (frame files are numbered frame_NNNN with at least 4 digits).
+MAX_FRAME = 10_000_000
+#: Lowest sun elevation accepted [deg]: the sun's disc (0.53° wide) clear of the horizon.
+MIN_SUN_ELEVATION = 0.5
+#: Largest scene file accepted [bytes].
+MAX_SCENE_BYTES = 1 << 20
+
+
 class _Section(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True, strict=False)
+    # NOTE: allow_inf_nan=False: no NaN or infinity anywhere (vectors included) unless a field allows it.
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=False, allow_inf_nan=False)
 
 
 Vec3 = tuple[float, float, float]
@@ -50,6 +67,9 @@ class OutputSettings(_Section):
     def _ordered(cls, value: tuple[int, int]) -> tuple[int, int]:
         if value[1] <= value[0]:
             raise ValueError(f"expected [start, end) with end > start, got {list(value)}")
+        if value[1] > MAX_FRAME or value[1] - value[0] > MAX_FRAME_COUNT:
+            raise ValueError(f"expected at most {MAX_FRAME_COUNT} frames per run and end ≤ {MAX_FRAME}, "
+                             f"got {list(value)}")
         return value
 
 
@@ -79,13 +99,14 @@ class RenderSettings(_Section):
                     "max(1, round(fraction x spp)); the sum is unbiased")
     denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
-    seed: int = Field(0, ge=0, description="sampler seed (per frame: seed + frame)")
+    seed: int = Field(0, ge=0, le=SEED_MAX, description="sampler seed (per frame: seed + frame, below 2³²)")
 
     @field_validator("variant")
     @classmethod
     def _spectral(cls, value: str) -> str:
-        if value != "auto" and "spectral" not in value:
-            raise ValueError(f"expected 'auto' or a spectral variant (e.g. 'llvm_ad_spectral'), got {value!r}")
+        if value != "auto" and value not in SPECTRAL_VARIANTS:
+            raise ValueError(f"expected 'auto' or one of {', '.join(SPECTRAL_VARIANTS)} (the scalar variants are "
+                             f"not supported: the renderer needs a JIT backend), got {value!r}")
         return value
 
 
@@ -108,7 +129,7 @@ class OceanSettings(_Section):
     wind_direction: float = Field(30.0, ge=-360, le=360, description="direction the wind blows toward, counter-clockwise from +x (east) [deg]")
     fetch: float = Field(1.0e5, gt=0, le=1.0e7, description="fetch of JONSWAP/TMA [m]")
     gamma: float = Field(3.3, ge=1, le=10, description="JONSWAP peak enhancement γ [-]")
-    wave_depth: float = Field(float("inf"), gt=0, description="water depth of the dispersion relation and TMA [m]; inf = deep")
+    wave_depth: float = Field(float("inf"), gt=0, allow_inf_nan=True, description="water depth of the dispersion relation and TMA [m]; inf = deep")
     alpha: float | None = Field(None, gt=0, le=0.1, description="Phillips/PM constant α [-] (default 8.1e-3)")
     small_wave_length: float = Field(0.0, ge=0, le=10, description="suppression length ℓ of small waves [m]")
     swell_height: float = Field(0.0, ge=0, le=30, description="significant height of an added swell [m]")
@@ -119,8 +140,8 @@ class OceanSettings(_Section):
     cascades: int = Field(1, ge=1, le=6, description="number of FFT patches of decreasing size [-]")
     resolution: int = Field(256, ge=8, le=8192, description="FFT grid points per side of each patch")
     choppiness: float = Field(0.8, ge=0, le=3, description="horizontal displacement scale λ [-]")
-    loop_period: float = Field(0.0, ge=0, description="period after which the sea repeats exactly [s]; 0 = never")
-    seed: int = Field(1, ge=0, description="random seed of the wave amplitudes")
+    loop_period: float = Field(0.0, ge=0, le=1e6, description="period after which the sea repeats exactly [s]; 0 = never")
+    seed: int = Field(1, ge=0, le=SEED_MAX, description="random seed of the wave amplitudes")
     wave_count: int = Field(256, ge=1, le=4096, description="components of the sum-of-sines / Gerstner models")
     gerstner_steepness: float = Field(0.8, ge=0, le=3, description="Gerstner steepness q [-]")
     fractal_gamma: float = Field(0.0, ge=0, le=2, description="weight γ of the fractal detail ζ = η + γ η_fractal [-]; 0 = off")
@@ -224,8 +245,11 @@ class WaterSettings(_Section):
     """The water body and its medium."""
 
     depth: float = Field(50.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]")
-    ior: float = Field(1.333, ge=1.0, le=2.0, description="refractive index of water [-]")
-    iop_table: str = Field("pure_seawater.csv", min_length=1, description="table of a, b [m⁻¹] in spectra/")
+    ior: float = Field(1.333, ge=1.1, le=2.0, description="refractive index of water [-] (a surface that "
+                                                         "refracts: 1.1 to 2)")
+    iop_table: str = Field("pure_seawater.csv", min_length=1, max_length=4096,
+                           description="table of a, b [m⁻¹]: a bare file name is in spectra/, a path is relative "
+                                       "to the scene file")
     jerlov_type: Literal["IB", "II", "III", "1C", "3C", "5C"] | None = Field(
         None, description="a Jerlov water type's measured IOPs (Williamson & Hollins 2022) instead of the table")
     surface_roughness: float | Literal["auto"] = Field(
@@ -299,7 +323,8 @@ class SunKeySettings(_Section):
     """One sun keyframe (``[[sun.keys]]``)."""
 
     time: float = Field(..., ge=-1.0e6, le=1.0e6, description="key time, t = frame / fps [s]")
-    elevation: float = Field(..., gt=0, le=90, description="sun elevation above the horizon at the key [deg]")
+    elevation: float = Field(..., ge=MIN_SUN_ELEVATION, le=90,
+                             description="sun elevation above the horizon at the key [deg]")
     azimuth: float = Field(..., ge=-720, le=720, description="sun azimuth clockwise from north (+y) [deg]; "
                                                              "write 350 then 370 to pass through north")
 
@@ -336,12 +361,12 @@ class SunSettings(_Section):
     written they must equal those).
     """
 
-    elevation: float = Field(40.0, gt=0, le=90, description="sun elevation above the horizon [deg]")
+    elevation: float = Field(40.0, ge=MIN_SUN_ELEVATION, le=90, description="sun elevation above the horizon [deg]")
     azimuth: float = Field(200.0, ge=-360, le=360, description="sun azimuth, clockwise from north (+y) [deg]")
     turbidity: float = Field(3.0, ge=1, le=10, description="atmospheric turbidity [-]")
     ground_albedo: float = Field(0.1, ge=0, le=1, description="ground albedo of the sky model [-]")
-    sun_scale: float = Field(1.0, ge=0, description="scale of the solar radiance [-]")
-    sky_scale: float = Field(1.0, ge=0, description="scale of the sky radiance [-]")
+    sun_scale: float = Field(1.0, ge=0, le=1e3, description="scale of the solar radiance [-]")
+    sky_scale: float = Field(1.0, ge=0, le=1e3, description="scale of the sky radiance [-]")
     keys: tuple[SunKeySettings, ...] = Field((), description="sun keyframes (time [s], elevation, azimuth [deg])")
     clock: SolarClockSettings | None = Field(None, description="a place and a clock instead of keyframes")
     interpolation: Interpolation = Field("monotone cubic", description="curve through the sun keyframes")
@@ -359,7 +384,7 @@ class SunSettings(_Section):
             elevation, azimuth = _key_value(first, "elevation"), _key_value(first, "azimuth")
             # NOTE: a key out of range is reported with its own key path, not through the static fields.
             if (isinstance(elevation, (int, float)) and isinstance(azimuth, (int, float))
-                    and 0 < elevation <= 90 and -720 <= azimuth <= 720):
+                    and MIN_SUN_ELEVATION <= elevation <= 90 and -720 <= azimuth <= 720):
                 return _first_key_fills(data, {"elevation": float(elevation),
                                                "azimuth": float(azimuth) % 360.0}, "sun")
         if clock is not None:
@@ -368,8 +393,8 @@ class SunSettings(_Section):
             except ValidationError:
                 return data  # reported with its key when the field itself is validated
             elevation, azimuth = settings.angles_at(0.0)
-            if not elevation > 0:
-                raise ValueError(f"[sun.clock]: the sun is below the horizon at start ({settings.start.isoformat()}, "
+            if not elevation >= MIN_SUN_ELEVATION:
+                raise ValueError(f"[sun.clock]: the sun is below the horizon (or within {MIN_SUN_ELEVATION}° of it) at start ({settings.start.isoformat()}, "
                                  f"t = 0 s): elevation {elevation:.2f} deg; sunsky needs it above")
             return _first_key_fills(data, {"elevation": elevation, "azimuth": azimuth}, "sun")
         return data
@@ -482,7 +507,7 @@ class VisionSettings(_Section):
                                       "every frame adapts at once to its own log-average")
     exposure: float = Field(0.0, ge=-10, le=10, description="exposure compensation [EV]: +1 doubles the light "
                                                             "before the display response")
-    display_luminance: float = Field(100.0, gt=0, le=10_000, description="display white luminance [cd m⁻²]")
+    display_luminance: float = Field(100.0, ge=1, le=10_000, description="display white luminance [cd m⁻²]")
 
     @field_validator("adaptation_luminance")
     @classmethod
@@ -534,13 +559,13 @@ class CoastalSettings(_Section):
     h_min: float = Field(0.002, ge=0, le=1, description="dry threshold: cells with depth ≤ h_min are land [m]")
     manning: float = Field(0.02, ge=0, le=1, description="Manning friction coefficient [s m^-1/3]")
     spinup: float = Field(20.0, ge=0, le=1e5, description="simulated time before frame 0 [s]")
-    checkpoint_interval: float = Field(10.0, gt=0, description="simulated time between checkpoints [s]")
+    checkpoint_interval: float = Field(10.0, ge=0.1, le=1e5, description="simulated time between checkpoints [s]")
     sand_albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)]] = Field(
         (0.25, 0.45), description="sand reflectance at 400 and 700 nm (linear in between) [-]")
     rock_albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)]] = Field(
         (0.06, 0.10), description="rock reflectance at 400 and 700 nm [-]")
     rock_cover: float = Field(0.15, ge=0, le=1, description="fraction of the seafloor that is rock [-]")
-    seed: int = Field(3, ge=0, description="seed of the rock pattern and of the spectral wave phases")
+    seed: int = Field(3, ge=0, le=SEED_MAX, description="seed of the rock pattern and of the spectral wave phases")
 
     @field_validator("cfl")
     @classmethod
@@ -571,7 +596,9 @@ class CoastalSettings(_Section):
 class Scene(_Section):
     """A whole scene; ``name`` defaults to the file's stem."""
 
-    name: str = Field(..., min_length=1, pattern=r"^[A-Za-z0-9_.-]+$")
+    name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_][A-Za-z0-9_.-]*$",
+                      description="the scene's folder name under the output directory: letters, digits, '_', "
+                                  "'.', '-', not starting with '.' or '-'")
     output: OutputSettings = OutputSettings()
     render: RenderSettings = RenderSettings()
     ocean: OceanSettings = OceanSettings()
@@ -610,10 +637,28 @@ class Scene(_Section):
             where = "[sun.clock]" if value.clock is not None else "[[sun.keys]]"
             for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
                 elevation = motion.at(t).elevation
-                if not elevation > 0:
-                    raise ValueError(f"{where}: the sun is below the horizon at frame {frame} (t = {t:g} s): "
+                if not elevation >= MIN_SUN_ELEVATION:
+                    raise ValueError(f"{where}: the sun is below the horizon (or within {MIN_SUN_ELEVATION}° of it) at frame {frame} (t = {t:g} s): "
                                      f"elevation {elevation:.2f} deg; sunsky needs it above over the frame range")
         return value
+
+    @model_validator(mode="after")
+    def _seeds_fit(self) -> "Scene":
+        last = self.render.seed + self.output.frames[1] - 1
+        if last > SEED_MAX:
+            raise ValueError(f"[render] seed: seed + last frame = {last} must stay below 2³² "
+                             f"(Mitsuba's 32-bit sampler seed); lower the seed")
+        return self
+
+    @model_validator(mode="after")
+    def _camera_above_water(self) -> "Scene":
+        level = self.coastal.still_level if self.coastal is not None else 0.0
+        positions = [self.camera.position] + [key.position for key in self.camera.keys]
+        low = min(position[2] for position in positions)
+        if low <= level:
+            raise ValueError(f"[camera] position: the camera is at z = {low:g} m, at or below the still water "
+                             f"level {level:g} m; under-water views are not supported yet")
+        return self
 
     @field_validator("composition")
     @classmethod
@@ -624,7 +669,27 @@ class Scene(_Section):
         return value
 
 
+def _field_location(location: tuple) -> tuple:
+    """``location`` without pydantic's union-member tags (``'float'``, ``"literal['frame']"``).
+
+    A name that is no field of its section is kept only as the last item (an unknown key).
+    """
+    kept, model = [], Scene
+    for index, item in enumerate(location):
+        if isinstance(item, int):
+            kept.append(item)
+        elif model is None:
+            continue  # a tag inside a plain field
+        elif item in model.model_fields:
+            kept.append(item)
+            model = _section_model(model.model_fields[item].annotation)
+        elif index == len(location) - 1:
+            kept.append(item)  # an unknown key
+    return tuple(kept)
+
+
 def _key_path(location: tuple) -> str:
+    location = _field_location(location)
     parts: list[str] = []
     for item in location:
         if isinstance(item, int) and parts:
@@ -686,7 +751,12 @@ def scene_from_dict(data: dict, source: str = "<dict>") -> Scene:
         return Scene.model_validate(data)
     except ValidationError as exc:
         first = exc.errors()[0]
+        message = first["msg"].removeprefix("Value error, ")
+        if not first["loc"] and message.startswith("["):  # a whole-scene check names its own key
+            raise SceneError(f"{source}: {message}") from None
         raise SceneError(f"{source}: {_key_path(first['loc'])}: {_describe(first)}") from None
+    except RecursionError:
+        raise SceneError(f"{source}: tables nested too deeply") from None
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -702,26 +772,55 @@ def load_scene(path: str | Path) -> Scene:
     SceneError
         One line naming the file, the key and what was expected.
     """
-    path = Path(path)
+    from ..io.paths import PathProblem, check_input_file  # noqa: PLC0415
+
     try:
-        text = path.read_text(encoding="utf-8")
+        path = check_input_file(path, MAX_SCENE_BYTES)
+        text = path.read_bytes().decode("utf-8")
+    except PathProblem as exc:
+        raise SceneError(f"{path}: cannot read scene file: {exc}") from None
     except OSError as exc:
         raise SceneError(f"{path}: cannot read scene file ({exc.strerror or exc})") from None
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"{path}: not UTF-8 text (byte {exc.start}); a scene file is TOML") from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"{path}: not valid TOML: {exc}") from None
-    data.setdefault("name", path.stem)
-    coastal = data.get("coastal")
-    if isinstance(coastal, dict):
-        # Array files are named relative to the scene file.
-        for key in ("bathymetry", "initial_surface"):
-            value = coastal.get(key)
-            if isinstance(value, str) and value.lower().endswith(ARRAY_SUFFIXES):
-                coastal[key] = str((path.parent / value).resolve())
+    except RecursionError:
+        raise SceneError(f"{path}: not usable TOML: tables or arrays nested too deeply") from None
+    if "name" not in data:
+        if not _SAFE_NAME.fullmatch(path.stem):
+            raise SceneError(f"{path}: name: the file's name {path.stem!r} is not a safe folder name (letters, "
+                             f"digits, '_', '.', '-', not starting with '.' or '-'); give name = \"...\" in the file")
+        data["name"] = path.stem
+    resolve_scene_paths(data, path.parent)
     scene = scene_from_dict(data, str(path))
     check_scene_inputs(scene, str(path))
     return scene
+
+
+_SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
+
+
+def resolve_scene_paths(data: dict, folder: Path) -> None:
+    """Make the file paths of a parsed scene absolute, in place, the one documented way.
+
+    Array files ([coastal] bathymetry, initial_surface) and an ``iop_table``
+    that is a path (holds a ``/``) are relative to the scene file's folder; a
+    bare table name is a table in ``spectra/`` and is left as it is.
+    """
+    coastal = data.get("coastal")
+    if isinstance(coastal, dict):
+        for key in ("bathymetry", "initial_surface"):
+            value = coastal.get(key)
+            if isinstance(value, str) and value.lower().endswith(ARRAY_SUFFIXES) and "\x00" not in value:
+                coastal[key] = os.path.abspath(folder / value)
+    water = data.get("water")
+    if isinstance(water, dict):
+        value = water.get("iop_table")
+        if isinstance(value, str) and "/" in value and "\x00" not in value:
+            water["iop_table"] = os.path.abspath(folder / value)
 
 
 def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:

@@ -52,6 +52,24 @@ def unresolved_slope_variance(spectrum, cutoff_wavenumber: float, shortest_wavel
     return float(np.trapezoid(radial, log_k))
 
 
+def elevation_variance(spectrum, k_min: float, k_max: float, samples: int = 2048) -> float:
+    """Elevation variance m₀ = ⟨η²⟩ [m²] of the waves with k_min ≤ k ≤ k_max [rad m⁻¹].
+
+    .. math:: m_0 = ∫_0^{2π} ∫_{k_min}^{k_max} Ψ(k, θ) k \\, dk \\, dθ
+
+    (the zeroth moment of the directional wavenumber spectrum: a variance
+    spectrum integrates to the variance by its definition); H_s = 4 √m₀ for
+    Rayleigh-distributed wave heights (Longuet-Higgins 1952).
+    """
+    log_k = np.linspace(np.log(k_min), np.log(k_max), samples)
+    theta = np.linspace(0.0, 2.0 * np.pi, 361)[:-1]
+    k = np.exp(log_k)[:, None]
+    psi = spectrum(k * np.cos(theta), k * np.sin(theta))
+    # dk = k d(ln k): integrand Ψ k · k over ln k; θ by the periodic rectangle rule.
+    radial = (k[:, 0] ** 2) * psi.mean(axis=1) * 2.0 * np.pi
+    return float(np.trapezoid(radial, log_k))
+
+
 def beckmann_alpha(mean_square_slope: float) -> float:
     """Beckmann roughness α [-] of an isotropic Gaussian slope distribution.
 

@@ -25,7 +25,7 @@ from .fft_ocean import FFTOcean, OceanGrid
 from .fractal import estimate_fbm_parameters, fractal_detail
 from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from_spectrum
 from .lod import LEVEL_POINTS_PER_WAVELENGTH, CascadeLevels, GainCompensated
-from .roughness import unresolved_slope_variance
+from .roughness import elevation_variance, unresolved_slope_variance
 from .wave_spectra import DirectionalSpectrum
 
 
@@ -55,6 +55,16 @@ SHORTEST_WAVELENGTH = 1e-3
 #: Wavenumber below which the spectrum's slope variance is left out of the total [rad m⁻¹]
 #: (waves over 60 km long: nothing of any sea spectrum here).
 LONGEST_WAVENUMBER = 1e-4
+
+
+def elevation_std(ocean: OceanSettings) -> float:
+    """Standard deviation σ_η [m] of the whole sea's elevation (wind sea and swell, 60 km to 1 mm waves).
+
+    From the spectrum's zeroth moment (:func:`~.roughness.elevation_variance`),
+    before any band limit of the geometry: an upper bound of what a mesh carries.
+    """
+    return float(np.sqrt(elevation_variance(directional_spectrum(ocean), LONGEST_WAVENUMBER,
+                                            2.0 * np.pi / SHORTEST_WAVELENGTH)))
 
 
 def _fractal_weight(spacing: NDArray, cell: float) -> NDArray:

@@ -1,5 +1,8 @@
 """The arrays a coastal scene names or defines: plane beach, array files checked before any work, rock cover."""
 
+import io
+import os
+
 import numpy as np
 import pytest
 
@@ -40,7 +43,7 @@ def write_scene(tmp_path, body, array=None, name="bathy.npy"):
     [
         (np.zeros((12, 15)), 'bathymetry = "bathy.npy"\n', r"\[coastal\] bathymetry: .*expected shape \(ny, nx\) = \(12, 16\)"),
         (np.where(np.eye(12, 16) > 0, np.nan, -1.0), 'bathymetry = "bathy.npy"\n', r"\[coastal\] bathymetry: .*12 NaN"),
-        (None, 'bathymetry = "missing.npy"\n', r"\[coastal\] bathymetry: file not found"),
+        (None, 'bathymetry = "missing.npy"\n', r"\[coastal\] bathymetry: .*missing.npy \(No such file or directory\)"),
         (np.full((12, 16), 5.0), 'bathymetry = "bathy.npy"\n', r"no cell is below the still level"),
         (None, "cfl = 0.7\n", r"\[coastal\] cfl: must be ≤ 0.5 at order 2"),
         (None, "h_min = -0.1\n", r"\[coastal\] h_min: .*greater than or equal to 0"),
@@ -52,6 +55,50 @@ def test_bad_inputs_are_refused_with_the_key(tmp_path, array, body, message):
     with pytest.raises(SceneError, match=message) as info:
         load_scene(path)
     assert str(path) in str(info.value) and "\n" not in str(info.value)
+
+
+def _npy_bytes(array):
+    buffer = io.BytesIO()
+    np.save(buffer, array)
+    return buffer.getvalue()
+
+
+GOOD = _npy_bytes(-np.ones((12, 16)))
+
+
+@pytest.mark.parametrize(
+    "content, message",
+    [
+        (b"", r"not a readable \.npy file"),
+        (b"\x93NUMPY\x01\x00garbage", r"not a readable \.npy file"),
+        (_npy_bytes(np.zeros((12, 16), dtype=[("a", "f8")])), r"expected an array of real numbers"),
+        (_npy_bytes(np.zeros((12, 16), dtype=complex)), r"expected an array of real numbers"),
+        (_npy_bytes(np.zeros((12, 16, 1))), r"expected a 2-D array"),
+        (GOOD.replace(b"(12, 16)", b"(100000, 100000)"), r"expected shape \(ny, nx\) = \(12, 16\)"),
+        (GOOD[:-8], r"holds 1528 bytes of data, its header claims 1536"),
+        (GOOD + b"\x00" * 8, r"holds 1544 bytes of data, its header claims 1536"),
+    ],
+)
+def test_npy_headers_are_checked_before_their_data_is_read(tmp_path, content, message):
+    (tmp_path / "bathy.npy").write_bytes(content)
+    with pytest.raises(SceneError, match=r"\[coastal\] bathymetry: .*" + message) as info:
+        load_scene(write_scene(tmp_path, 'bathymetry = "bathy.npy"\n'))
+    assert "\n" not in str(info.value)
+
+
+def test_a_header_claiming_more_elements_than_accepted_is_refused_without_reading(tmp_path):
+    claim = GOOD.replace(b"(12, 16)", b"(100000, 100000)")
+    (tmp_path / "big.npy").write_bytes(claim)
+    with pytest.raises(ValueError, match=r"at most 268435456 elements, the header claims 10000000000"):
+        arrays.read_array(tmp_path / "big.npy")
+
+
+@pytest.mark.parametrize("kind", ["fifo", "folder"])
+def test_fifos_and_folders_are_not_read_as_arrays(tmp_path, kind):
+    target = tmp_path / "odd.npy"
+    os.mkfifo(target) if kind == "fifo" else target.mkdir()  # a FIFO would block a reader for ever
+    with pytest.raises(SceneError, match=r"\[coastal\] bathymetry: .*(not a regular file|is a folder)"):
+        load_scene(write_scene(tmp_path, 'bathymetry = "odd.npy"\n'))
 
 
 def test_array_bathymetry_is_read_relative_to_the_scene(tmp_path):
