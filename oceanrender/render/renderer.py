@@ -51,6 +51,36 @@ def in_water_seed(seed: int) -> int:
     return (int(seed) + 0x6A09E667) % (1 << 32)
 
 
+#: Most Monte Carlo samples (pixels × spp) of one ``mi.render`` call: drjit indexes a pass's samples
+#: with 32 bits, so a pass beyond 2³² crashes Mitsuba; larger frames render in several passes.
+MAX_SAMPLES_PER_PASS = 1 << 30
+
+
+def sample_passes(pixels: int, spp: int, seed: int, cap: int = MAX_SAMPLES_PER_PASS) -> list[tuple[int, int]]:
+    """Split ``spp`` samples per pixel into passes of at most ``cap`` samples: [(spp_i, seed_i), ...].
+
+    The first pass keeps ``seed`` (a frame that fits one pass renders as before);
+    pass i > 0 takes seed + i·0x9E3779B9 (mod 2³², the golden-ratio increment),
+    far from the per-frame seeds seed + frame. The spp of the passes sum to ``spp``.
+    """
+    per_pass = max(1, cap // max(1, int(pixels)))
+    count = -(-int(spp) // per_pass)
+    sizes = [int(spp) // count + (1 if i < int(spp) % count else 0) for i in range(count)]
+    return [(size, (int(seed) + i * 0x9E3779B9) % (1 << 32)) for i, size in enumerate(sizes)]
+
+
+def render_passes(scene, spp: int, seed: int, integrator=None) -> np.ndarray:
+    """Mean film of ``spp`` samples per pixel rendered in :func:`sample_passes` passes (H, W, C)."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    width, height = scene.sensors()[0].film().crop_size()
+    total = None
+    for size, pass_seed in sample_passes(int(width) * int(height), spp, seed):
+        film = np.array(mi.render(scene, integrator=integrator, seed=pass_seed, spp=size), dtype=np.float64)
+        total = film * size if total is None else total + film * size
+    return total / int(spp)
+
+
 def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
     """Replace non-finite pixels by the mean of their finite 3×3 neighbours.
 
@@ -300,12 +330,9 @@ class WaterRenderer:
         seed stream) to the rest (``spp``): the film values are per-pixel means, and the two
         passes estimate disjoint parts of each sample's radiance, so their sum is unbiased.
         """
-        import mitsuba as mi  # noqa: PLC0415
-
-        film = np.array(mi.render(self.scene, seed=int(seed), spp=int(spp)))
+        film = render_passes(self.scene, int(spp), int(seed))
         if self.in_water is not None:
-            film = film + np.array(mi.render(self.scene, integrator=self.in_water, seed=in_water_seed(seed),
-                                             spp=self.in_water_spp(spp)))
+            film = film + render_passes(self.scene, self.in_water_spp(spp), in_water_seed(seed), self.in_water)
         if self.bands:
             self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]
         return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))

@@ -116,3 +116,17 @@ def test_foam_layer_reflects_fresh_foam_on_its_fraction(variant):
         # 65 536 samples of a cosine-weighted bounce and the spectral sampling: ≲ 1 % Monte Carlo error
         assert y == pytest.approx((1 - weight) * 0.1 + weight * foam_y, rel=0.02)
     assert 0.5 < foam_y < 0.55  # flat in the visible, falling beyond 555 nm
+
+
+@pytest.mark.parametrize("pixels, spp", [(16384**2, 64), (1280 * 720, 4096), (8 * 6, 1), (4096**2, 1000)])
+def test_sample_passes_stay_within_32_bit_sample_indices(pixels, spp):
+    from oceanrender.render.renderer import MAX_SAMPLES_PER_PASS, sample_passes
+
+    passes = sample_passes(pixels, spp, seed=2**32 - 1)
+    assert sum(size for size, _ in passes) == spp
+    assert all(size * pixels <= MAX_SAMPLES_PER_PASS or size == 1 for size, _ in passes)
+    assert max(size for size, _ in passes) - min(size for size, _ in passes) <= 1  # even passes
+    seeds = [seed for _, seed in passes]
+    assert seeds[0] == 2**32 - 1 and len(set(seeds)) == len(seeds) and all(0 <= s < 2**32 for s in seeds)
+    if pixels * spp <= MAX_SAMPLES_PER_PASS:
+        assert passes == [(spp, 2**32 - 1)]  # a frame that fits renders in one pass, as before
