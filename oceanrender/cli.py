@@ -174,21 +174,37 @@ def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
     return with_overrides(scene, "command line", output=output, render=render, vision=vision)
 
 
-def check_resources(scene: Scene, source: str) -> None:
-    """Load the data the scene names, so a bad table fails before any work."""
-    from .optics.tables import SpectralDataError  # noqa: PLC0415
-    from .optics.water import pure_seawater_iops  # noqa: PLC0415
+def check_run(scene: Scene, source: str, out: Path, out_key: str, *, tables: bool = True, sea: bool = True,
+              renders: bool = True, needed_bytes: float | None = None) -> Path:
+    """Check everything the run needs before any work (:mod:`oceanrender.checks`); the output folder, probed.
 
-    try:
-        pure_seawater_iops(scene.water.iop_table)
-    except SpectralDataError as exc:
-        raise UserError(f"{source}: [water] iop_table: {exc}") from None
-    from .optics.scene_water import water_composition  # noqa: PLC0415
+    Tables (``tables``), the open sea against its water body (``sea``), the
+    memory estimate (the renderer's share with ``renders``) and the output
+    folder ``out`` (created and written to), in that order.
+    """
+    from . import checks  # noqa: PLC0415
 
+    if tables:
+        checks.check_tables(scene, source)
+    if sea:
+        checks.check_sea(scene, source)
+    checks.check_memory(scene, source, renders=renders)
+    return checks.check_output(out, source, out_key, needed_bytes if needed_bytes is not None
+                               else 2 * checks.frame_bytes(scene) + 16 * checks.MiB)
+
+
+def scene_folder(scene: Scene, source: str) -> Path:
+    """``<[output] directory>/<scene name>``, refused if it resolves outside the directory (a link)."""
+    from .io.paths import PathProblem, check_inside  # noqa: PLC0415
+
+    root = Path(scene.output.directory)
     try:
-        water_composition(scene)
-    except ValueError as exc:
-        raise UserError(f"{source}: [composition]: {exc}") from None
+        check_inside(root / scene.name, root)
+    except PathProblem as exc:
+        raise UserError(f"{source}: name: {exc}; expected a folder inside the output directory") from None
+    except OSError as exc:
+        raise UserError(f"{source}: [output] directory: {root}: {exc.strerror or exc}") from None
+    return root / scene.name
 
 
 def activate(requested: str):
@@ -200,21 +216,80 @@ def activate(requested: str):
         raise UserError(str(exc)) from None
 
 
+#: Schemes of Dask scheduler addresses accepted by --cluster (distributed's TCP and TLS comms).
+CLUSTER_SCHEMES = ("tcp", "tls")
+#: Seconds to wait for a scheduler: the TCP connect, then the whole Dask handshake.
+CLUSTER_CONNECT_S = 10.0
+
+
+def parse_cluster_address(text: str) -> tuple[str, str, int]:
+    """(scheme, host, port) of a scheduler address ``tcp://HOST:PORT`` / ``tls://HOST:PORT``; UserError if malformed."""
+    from urllib.parse import urlsplit  # noqa: PLC0415
+
+    expected = f"expected a Dask scheduler address like tcp://HOST:8786 ({' or '.join(CLUSTER_SCHEMES)}), got {text!r}"
+    try:
+        parts = urlsplit(text)
+        port = parts.port
+    except ValueError:
+        raise UserError(f"--cluster: {expected}") from None
+    if (parts.scheme not in CLUSTER_SCHEMES or not parts.hostname or port is None or not 0 < port < 65536
+            or parts.path not in ("", "/") or parts.query or parts.fragment or parts.username):
+        raise UserError(f"--cluster: {expected}")
+    return parts.scheme, parts.hostname, port
+
+
 def check_dask_options(args: argparse.Namespace) -> None:
-    """--workers N ≥ 1; --cluster a scheduler address such as tcp://HOST:PORT."""
-    if args.workers is not None and args.workers < 1:
-        raise UserError(f"--workers: expected a number of worker processes ≥ 1, got {args.workers}")
-    if args.cluster is not None and "://" not in args.cluster:
-        raise UserError(f"--cluster: expected a Dask scheduler address like tcp://HOST:8786, got {args.cluster!r}")
+    """--workers N in [1, 256]; --cluster a scheduler address such as tcp://HOST:PORT."""
+    if args.workers is not None and not 1 <= args.workers <= 256:
+        raise UserError(f"--workers: expected a number of worker processes in [1, 256], got {args.workers}")
+    if args.cluster is not None:
+        parse_cluster_address(args.cluster)
 
 
 def cmd_render(args: argparse.Namespace) -> int:
     check_dask_options(args)
     scene = load_scene(args.scene)
     scene = scene_with_cli_overrides(scene, args)
-    check_resources(scene, str(args.scene))
+    source = str(args.scene)
+    check_run(scene, source, scene_folder(scene, source),
+              "--out" if args.out is not None else "[output] directory")
     with dask_client(args) as client:  # None: this process renders
         return _render(args, scene, client)
+
+
+def connect_cluster(address: str, timeout_s: float = CLUSTER_CONNECT_S):
+    """A Dask Client of the scheduler at ``address``, or UserError within about 2 × ``timeout_s`` seconds.
+
+    A TCP connect with a timeout comes first (an unreachable host); then the
+    Dask handshake runs in a daemon thread with a deadline, so a peer that
+    accepts but never answers (or answers something else) cannot hang the run.
+    """
+    import socket  # noqa: PLC0415
+    import threading  # noqa: PLC0415
+
+    _, host, port = parse_cluster_address(address)
+    try:
+        socket.create_connection((host, port), timeout=timeout_s).close()
+    except OSError as exc:
+        raise UserError(f"--cluster {address}: no Dask scheduler reachable ({exc.strerror or exc})") from None
+    result: dict[str, object] = {}
+
+    def handshake() -> None:
+        from dask.distributed import Client  # noqa: PLC0415
+
+        try:
+            result["client"] = Client(address, timeout=f"{timeout_s:g}s")
+        except BaseException as exc:  # noqa: BLE001 (any failure of a foreign peer is reported in one line)
+            result["error"] = exc
+
+    thread = threading.Thread(target=handshake, daemon=True, name="dask-connect")
+    thread.start()
+    thread.join(timeout_s + 5.0)
+    if "client" in result:
+        return result["client"]
+    error = result.get("error")
+    reason = f"{type(error).__name__}: {error}" if error is not None else f"no answer within {timeout_s + 5:g} s"
+    raise UserError(f"--cluster {address}: not a Dask scheduler that answers ({str(reason)[:200]})")
 
 
 @contextlib.contextmanager
@@ -229,11 +304,7 @@ def dask_client(args: argparse.Namespace) -> Iterator[object]:
     from dask.distributed import Client  # noqa: PLC0415
 
     if args.cluster is not None:
-        try:
-            client = Client(args.cluster, timeout="10s")
-        except (OSError, TimeoutError) as exc:
-            raise UserError(f"--cluster {args.cluster}: no Dask scheduler reachable ({exc})") from None
-        with client:
+        with connect_cluster(args.cluster) as client:
             yield client
         return
     from .production.distributed import local_cluster  # noqa: PLC0415
@@ -244,7 +315,7 @@ def dask_client(args: argparse.Namespace) -> Iterator[object]:
 
 def _render(args: argparse.Namespace, scene: Scene, client) -> int:
     runtime = activate(scene.render.variant)
-    out_dir = Path(scene.output.directory) / scene.name
+    out_dir = scene_folder(scene, str(args.scene))
     start, end = scene.output.frames
     width, height = scene.output.resolution
     where = "" if client is None else (f", {len(client.scheduler_info()['workers'])} Dask worker(s)"
@@ -325,6 +396,9 @@ def cmd_geometry(args: argparse.Namespace) -> int:
         scene = with_overrides(scene, "command line", output={"frames": args.frames})
     if scene.ocean.model != "FFT":
         raise UserError(f"{args.scene}: [ocean] model: geometry export needs 'FFT', got {scene.ocean.model!r}")
+    res = scene.ocean.resolution
+    check_run(scene, str(args.scene), args.out, "--out", tables=False, sea=args.ply, renders=args.camera_mesh,
+              needed_bytes=scene.ocean.cascades * res * res * 4 * 12 + 16 * (1 << 20))
     from .waves.sea import SeaSurface  # noqa: PLC0415
     from .export.wave_maps import export_geometry_sequence  # noqa: PLC0415
 
@@ -368,6 +442,12 @@ def cmd_movie(args: argparse.Namespace) -> int:
     folder = args.folder
     if not folder.is_dir():
         raise UserError(f"{folder}: not a folder")
+    from .io.paths import PathProblem, check_output_folder  # noqa: PLC0415
+
+    try:
+        check_output_folder(folder)
+    except PathProblem as exc:
+        raise UserError(f"{folder}: {exc}") from None
     fps = args.fps or _sequence_fps(folder) or 24.0
     if not (0 < fps <= 1000 and 0 <= args.crf <= 51 and args.columns >= 1):
         raise UserError(f"--fps must be in (0, 1000], --crf in [0, 51], --columns ≥ 1; got {fps}, {args.crf}, "
@@ -389,6 +469,9 @@ def cmd_coastal(args: argparse.Namespace) -> int:
         scene = with_overrides(scene, "command line", output={"frames": args.frames})
     if scene.coastal is None:
         raise UserError(f"{args.scene}: [coastal]: the scene has no coastal section to simulate")
+    cells = scene.coastal.cells[0] * scene.coastal.cells[1]
+    check_run(scene, str(args.scene), args.out, "--out", tables=False, sea=False, renders=False,
+              needed_bytes=cells * 8 * 12 + 16 * (1 << 20))
     from tqdm import tqdm  # noqa: PLC0415
 
     from .coastal.simulation import run_simulation  # noqa: PLC0415
@@ -408,7 +491,9 @@ def cmd_coastal(args: argparse.Namespace) -> int:
         report = run_simulation(scene, args.out, on_progress=on_progress)
     rate = report.cell_updates / report.seconds / 1e6 if report.seconds > 0 else 0.0
     resumed = f", resumed at τ = {report.resumed_from:.2f} s" if report.resumed_from is not None else ""
-    print(f"simulated {len(report.simulated)} frame(s), {len(report.found)} already stored{resumed}, "
+    rewritten = (f" ({len(report.exr_rewritten)} lost EXR(s) rewritten from their fields)"
+                 if report.exr_rewritten else "")
+    print(f"simulated {len(report.simulated)} frame(s), {len(report.found)} already stored{rewritten}{resumed}, "
           f"in {report.seconds:.1f} s ({rate:.1f} million cell-updates/s)")
     return 0
 
@@ -417,7 +502,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     import numpy as np  # noqa: PLC0415
 
     scene = load_scene(args.scene)
-    check_resources(scene, str(args.scene))
+    check_run(scene, str(args.scene), args.out, "--out", sea=False, renders=False)
     runtime = activate(args.variant or scene.render.variant)
     from .export.optics_report import write_optics_report  # noqa: PLC0415
     from .optics.report import REPORT_WAVELENGTHS, scene_optics  # noqa: PLC0415
@@ -472,12 +557,12 @@ def _realtime_scene(args: argparse.Namespace) -> Scene:
     output = {key: value for key, value in (("frames", getattr(args, "frames", None)), ("spp", args.spp),
                                             ("resolution", args.resolution)) if value is not None}
     scene = with_overrides(scene, "command line", output=output)
-    check_resources(scene, str(args.scene))
+    check_run(scene, str(args.scene), args.out, "--out")
     return scene
 
 
-def _reference_renderer(scene: Scene, variant: str, frames: tuple[int, int]):
-    """A ReferenceRenderer of the scene, after running (or reusing) its coastal simulation."""
+def _reference_renderer(scene: Scene, variant: str, frames: tuple[int, int], out: Path):
+    """A ReferenceRenderer of the scene, after running (or reusing) its coastal simulation in ``out/coastal``."""
     from .pipeline import coastal_store  # noqa: PLC0415
     from .realtime.reference import ReferenceRenderer  # noqa: PLC0415
 
@@ -485,8 +570,8 @@ def _reference_renderer(scene: Scene, variant: str, frames: tuple[int, int]):
     if scene.coastal is not None:
         from .coastal.simulation import run_simulation  # noqa: PLC0415
 
-        # NOTE: the same store as `oceanrender render` uses, so simulations are shared between commands.
-        store = coastal_store(Path(scene.output.directory) / scene.name)
+        # NOTE: under --out, as every output of the command; the layout is `oceanrender render`'s.
+        store = coastal_store(out)
         print(f"coastal simulation -> {store}", flush=True)
         run_simulation(scene, store, frames)
     return ReferenceRenderer(scene, variant, first_frame=frames[0], coastal_store=store)
@@ -526,7 +611,7 @@ def cmd_bake_luts(args: argparse.Namespace) -> int:
     reference_xyz = None
     if scene.vision.adaptation_luminance == "frame" and args.adaptation_luminance is None:
         start = scene.output.frames[0]
-        renderer = _reference_renderer(scene, runtime.variant, (start, start + 1))
+        renderer = _reference_renderer(scene, runtime.variant, (start, start + 1), args.out)
         width, height = renderer.sequence.resolution
         print(f"rendering frame {start} ({width}x{height}, {renderer.sequence.spp} spp) for the adaptation "
               "luminance ('frame')", flush=True)
@@ -569,7 +654,7 @@ def cmd_reference(args: argparse.Namespace) -> int:
     start, end = scene.output.frames
     out = args.out
     tic = time.perf_counter()
-    renderer = _reference_renderer(scene, runtime.variant, (start, end))
+    renderer = _reference_renderer(scene, runtime.variant, (start, end), out)
     (width, height), spp = renderer.sequence.resolution, renderer.sequence.spp
     print(f"oceanrender {__version__}: reference set of {scene.name}, frames {start}:{end}, {width}x{height}, "
           f"{spp} spp, variant {runtime.variant} -> {out}", flush=True)
@@ -635,6 +720,17 @@ def main(argv: list[str] | None = None) -> int:
     except (SceneError, UserError) as exc:
         print(f"oceanrender: error: {exc}", file=sys.stderr)
         return 2
+    except OSError as exc:  # a file system failing mid-run (disk full, folder removed): finished work is kept
+        from .io.paths import is_disk_full  # noqa: PLC0415
+
+        what = "disk full" if is_disk_full(exc) else (exc.strerror or str(exc))
+        print(f"oceanrender: error: {exc.filename or 'a file'}: {what}; finished frames are kept, "
+              f"rerun the same command to resume", file=sys.stderr)
+        return 1
+    except MemoryError:
+        print("oceanrender: error: out of memory; finished frames are kept; lower the sizes of the scene "
+              "([output] resolution, [ocean] resolution, [mesh] segments)", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print("oceanrender: interrupted; finished frames are kept, rerun to resume", file=sys.stderr)
         return 130

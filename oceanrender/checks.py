@@ -1,0 +1,189 @@
+"""Everything a run needs, checked before any work starts: data, sea, memory, output folders.
+
+:func:`oceanrender.scene.load_scene` checks each value on its own (ranges,
+finiteness, files the scene names). What needs the physics of a stage above
+``scene/`` is checked here, once the command line has been applied and before
+any stage allocates or writes:
+
+* the water's tables (:func:`check_tables`): every IOP table read and checked
+  for shape, finiteness and sign, the composition's components resolved;
+* the open sea against its water body (:func:`check_sea`): the flat bottom
+  below the deepest troughs and the camera above the highest crests, judged on
+  the spectrum's elevation σ. A Gaussian sea exceeds 8σ at a point with
+  probability ~10⁻¹⁵; the highest crest of N waves is about σ √(2 ln N)
+  (Longuet-Higgins 1952, Rayleigh crest heights): 3.7σ for N = 1000, so a
+  camera above 4σ stays dry through a long sequence, and level views from 1 m
+  over an 8 m/s sea (σ = 0.21 m) remain possible;
+* memory (:func:`memory_estimate`, :func:`check_memory`): the stages' peak
+  memory from the scene's sizes, with per-unit costs measured by
+  ``benchmarks/bench_memory.py`` (BENCHMARKS.md, "Memory"), against the memory
+  available now; refused with the estimate;
+* output folders (:func:`check_output`): created and probed with a real file,
+  with room for the first frame's files.
+
+Each failure is a :class:`~oceanrender.scene.SceneError` of one line naming
+the file, the key and what was expected. Sizes in bytes, lengths in m.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from .scene import Scene, SceneError
+
+GiB = float(1 << 30)
+MiB = float(1 << 20)
+
+#: Peak bytes per FFT grid point and cascade (spectrum, fields and level pyramids), measured.
+BYTES_PER_FFT_POINT = 204.0
+#: Peak bytes per vertex of the radial water body (sampling every cascade, normals, foam, Mitsuba's buffers), measured.
+BYTES_PER_MESH_VERTEX = 960.0
+#: Peak bytes per shallow-water cell (state, fluxes, ghosts, work arrays), measured.
+BYTES_PER_COASTAL_CELL = 74.0
+#: Peak bytes per pixel of a frame: Mitsuba's film, XYZ, the vision model, EXR and PNG buffers, measured.
+#: (Samples cost none: the split integrator's paths are loops inside one drjit kernel, measured too.)
+BYTES_PER_PIXEL = 220.0
+#: What a render process holds whatever the scene: Python, numpy, Mitsuba, drjit and its LLVM JIT.
+FIXED_BYTES = 1.5 * GiB
+#: Share of the memory available now that a run may plan to use.
+MEMORY_SHARE = 0.8
+
+#: Elevation σ multiples: the bottom must lie below −8σ, the camera above +4σ (see the module docstring).
+TROUGH_SIGMAS = 8.0
+CREST_SIGMAS = 4.0
+
+
+@dataclass(frozen=True)
+class MemoryItem:
+    """One stage's share of a run's peak memory: the scene key that sizes it, what it is, bytes."""
+
+    key: str
+    what: str
+    bytes: float
+
+
+def available_memory() -> float:
+    """Memory available to a new allocation now [bytes]: MemAvailable of /proc/meminfo, else physical memory."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as handle:
+            for line in handle:
+                if line.startswith("MemAvailable:"):
+                    return float(line.split()[1]) * 1024.0
+    except OSError:
+        pass
+    return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+
+
+def mesh_vertices(scene: Scene) -> int:
+    """Top vertices of the scene's water body [-] (the radial grid of [mesh], or the FFT patch)."""
+    if scene.coastal is not None:
+        return (scene.coastal.cells[0] + 1) * (scene.coastal.cells[1] + 1)
+    if scene.mesh.kind == "radial":
+        ratio = 1.0 + 2.0 * math.pi / scene.mesh.segments  # RadialGrid.square_cells
+        rings = math.ceil(math.log(scene.mesh.outer_radius / scene.mesh.inner_radius) / math.log(ratio)) + 1
+        return 1 + max(rings, 2) * scene.mesh.segments
+    return (scene.ocean.resolution + 1) ** 2
+
+
+def memory_estimate(scene: Scene, renders: bool = True) -> list[MemoryItem]:
+    """The run's peak memory by stage [bytes], from the scene's sizes and the measured per-unit costs.
+
+    ``renders`` False leaves out the renderer (commands that only simulate or export).
+    """
+    ocean, items = scene.ocean, [MemoryItem("(whole run)", "Python, Mitsuba and drjit", FIXED_BYTES)]
+    if ocean.model == "FFT":
+        points = ocean.resolution ** 2 * ocean.cascades
+        items.append(MemoryItem("[ocean] resolution", f"FFT sea: {ocean.resolution}² points × {ocean.cascades} "
+                                f"cascade(s)", points * BYTES_PER_FFT_POINT))
+    if scene.coastal is not None:
+        cells = scene.coastal.cells[0] * scene.coastal.cells[1]
+        items.append(MemoryItem("[coastal] cells", f"shallow water: {cells} cells", cells * BYTES_PER_COASTAL_CELL))
+    key = "[coastal] cells" if scene.coastal is not None else (
+        "[mesh] segments" if scene.mesh.kind == "radial" else "[ocean] resolution")
+    vertices = mesh_vertices(scene)
+    if renders:
+        items.append(MemoryItem(key, f"water body: {vertices} vertices", vertices * BYTES_PER_MESH_VERTEX))
+        width, height = scene.output.resolution
+        pixels = width * height
+        items.append(MemoryItem("[output] resolution", f"frame: {width}x{height} pixels",
+                                pixels * (BYTES_PER_PIXEL + 4 * scene.output.spectral_bands)))
+    return items
+
+
+def check_memory(scene: Scene, source: str, renders: bool = True, available: float | None = None) -> None:
+    """Refuse a run whose :func:`memory_estimate` exceeds :data:`MEMORY_SHARE` of the memory available."""
+    items = memory_estimate(scene, renders)
+    total = sum(item.bytes for item in items)
+    budget = MEMORY_SHARE * (available_memory() if available is None else available)
+    if total > budget:
+        largest = max(items[1:], key=lambda item: item.bytes)
+        raise SceneError(f"{source}: {largest.key}: the run needs about {total / GiB:.1f} GiB ({largest.what}: "
+                         f"{largest.bytes / GiB:.1f} GiB), more than the {budget / GiB:.1f} GiB it may use here; "
+                         f"expected a smaller value")
+
+
+def check_tables(scene: Scene, source: str) -> None:
+    """Read and check the water's tables (IOP table, components) so a bad one fails before any work."""
+    from .optics.scene_water import water_composition  # noqa: PLC0415
+    from .optics.tables import SpectralDataError  # noqa: PLC0415
+    from .optics.water import pure_seawater_iops  # noqa: PLC0415
+
+    try:
+        pure_seawater_iops(scene.water.iop_table)
+    except SpectralDataError as exc:
+        raise SceneError(f"{source}: [water] iop_table: {exc}") from None
+    try:
+        water_composition(scene)
+    except (SpectralDataError, ValueError) as exc:
+        raise SceneError(f"{source}: [composition]: {exc}") from None
+
+
+def lowest_camera_height(scene: Scene) -> float:
+    """Lowest camera height over the scene's frames [m] (the static position, or the path at every frame time)."""
+    if not scene.camera.animated:
+        return float(scene.camera.position[2])
+    from .scene.motion import frame_times, scene_camera_path  # noqa: PLC0415
+
+    path = scene_camera_path(scene.camera)
+    return min(float(path.at(t).position[2]) for t in frame_times(scene.output.frames, scene.output.fps))
+
+
+def check_sea(scene: Scene, source: str) -> None:
+    """The open sea fits its water body: bottom below −8σ, camera above +4σ of the elevation [m]."""
+    if scene.coastal is not None:
+        return
+    from .waves.sea import elevation_std  # noqa: PLC0415
+
+    sigma = elevation_std(scene.ocean)
+    if not math.isfinite(sigma):
+        raise SceneError(f"{source}: [ocean]: the spectrum's elevation variance is not finite; expected a sea "
+                         f"with finite waves (check wind_speed, fetch, swell_height)")
+    floor = TROUGH_SIGMAS * sigma
+    if scene.water.depth < floor:
+        raise SceneError(f"{source}: [water] depth: {scene.water.depth:g} m is above the deepest troughs of the sea; "
+                         f"expected ≥ {floor:.3g} m ({TROUGH_SIGMAS:g} σ, σ = {sigma:.3g} m of the [ocean] spectrum)")
+    crest = CREST_SIGMAS * sigma
+    low = lowest_camera_height(scene)
+    if low < crest:
+        raise SceneError(f"{source}: [camera] position: the camera comes down to z = {low:g} m, into the crests of "
+                         f"the sea; expected z ≥ {crest:.3g} m ({CREST_SIGMAS:g} σ, σ = {sigma:.3g} m); under-water "
+                         f"views are not supported yet")
+
+
+def frame_bytes(scene: Scene) -> float:
+    """Largest size of one rendered frame's files [bytes]: EXR (6 float32 channels), PNG, spectral EXR."""
+    width, height = scene.output.resolution
+    return width * height * (6 * 4 + 3 + 4 * scene.output.spectral_bands) + 64 * 1024
+
+
+def check_output(folder: str | Path, source: str, key: str, needed_bytes: float = 16 * MiB) -> Path:
+    """Create and probe an output folder (see :func:`oceanrender.io.paths.check_output_folder`)."""
+    from .io.paths import PathProblem, check_output_folder  # noqa: PLC0415
+
+    try:
+        return check_output_folder(folder, int(needed_bytes))
+    except PathProblem as exc:
+        raise SceneError(f"{source}: {key}: {exc}; expected a folder that can be written") from None

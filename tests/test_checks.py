@@ -1,0 +1,108 @@
+"""What a run needs, checked before any work: tables, the sea against its water body, memory, output folders."""
+
+from __future__ import annotations
+
+import pytest
+
+from oceanrender import checks
+from oceanrender.scene import SceneError, scene_from_dict, with_overrides
+from oceanrender.waves.sea import elevation_std
+
+OCEAN = {"spectrum": "Pierson-Moskowitz 1964", "wind_speed": 10.0, "resolution": 64}
+
+
+def scene(**sections):
+    return scene_from_dict({"name": "c", "ocean": OCEAN, "mesh": {"kind": "radial", **sections.pop("mesh", {})},
+                            **sections})
+
+
+def test_the_vertex_count_is_the_radial_grid_s(variant):
+    """mesh_vertices (no mesh built) against the top vertices of the water body the renderer gets."""
+    from oceanrender.surface.open_sea import WaterBody
+
+    for segments in (16, 48, 128):
+        s = scene(mesh={"segments": segments}, foam={"enabled": False})
+        body = WaterBody(s)
+        body.frame(0.0)
+        assert checks.mesh_vertices(s) == body.grid_at(0.0).top_vertex_count
+
+
+def test_memory_estimate_adds_the_measured_costs():
+    s = scene(output={"resolution": [200, 100]}, ocean={**OCEAN, "cascades": 2})
+    items = {item.key: item.bytes for item in checks.memory_estimate(s)}
+    assert items["[ocean] resolution"] == 64**2 * 2 * checks.BYTES_PER_FFT_POINT
+    assert items["[mesh] segments"] == checks.mesh_vertices(s) * checks.BYTES_PER_MESH_VERTEX
+    assert items["[output] resolution"] == 200 * 100 * (checks.BYTES_PER_PIXEL + 4 * s.output.spectral_bands)
+    assert "[mesh] segments" not in {item.key for item in checks.memory_estimate(s, renders=False)}
+
+
+@pytest.mark.parametrize(
+    "sections, key",
+    [
+        ({"output": {"resolution": [16384, 16384]}}, "[output] resolution"),
+        ({"ocean": {**OCEAN, "resolution": 8192, "cascades": 4}}, "[ocean] resolution"),
+        ({"mesh": {"segments": 16384}}, "[mesh] segments"),
+    ],
+)
+def test_runs_beyond_the_memory_are_refused_with_the_estimate(sections, key):
+    with pytest.raises(SceneError, match=rf"scene.toml: {key.replace('[', '.').replace(']', '.')}: the run needs "
+                                         r"about [0-9.]+ GiB .* more than the 12.8 GiB it may use here") as info:
+        checks.check_memory(scene(**sections), "scene.toml", available=16 * checks.GiB)
+    assert "\n" not in str(info.value)
+
+
+def test_the_shipped_sizes_fit_a_16_gib_machine():
+    checks.check_memory(scene(), "scene.toml", available=16 * checks.GiB)
+
+
+def test_a_bottom_above_the_troughs_and_a_camera_in_the_crests_are_refused():
+    sigma = elevation_std(scene().ocean)  # PM at 10 m/s: Hs ≈ 2.2 m, σ ≈ 0.55 m
+    checks.check_sea(scene(water={"depth": 8.01 * sigma}, camera={"position": [0, 0, 4.01 * sigma],
+                                                                  "target": [0, 10, 0]}), "s.toml")
+    with pytest.raises(SceneError, match=r"\[water\] depth: .* above the deepest troughs of the sea; expected ≥"):
+        checks.check_sea(scene(water={"depth": 7.9 * sigma}), "s.toml")
+    with pytest.raises(SceneError, match=r"\[camera\] position: the camera comes down to z = .*into the crests"):
+        checks.check_sea(scene(camera={"position": [0, 0, 3.9 * sigma], "target": [0, 10, 0]}), "s.toml")
+
+
+def test_the_lowest_point_of_a_camera_path_counts():
+    keys = [{"time": 0.0, "position": [0, 0, 10.0], "target": [0, 10, 0], "fov": 60.0},
+            {"time": 1.0, "position": [0, 5, 0.5], "target": [0, 15, 0], "fov": 60.0},
+            {"time": 2.0, "position": [0, 10, 10.0], "target": [0, 20, 0], "fov": 60.0}]
+    s = scene(camera={"keys": keys}, output={"frames": [0, 48], "fps": 24.0})
+    assert checks.lowest_camera_height(s) == pytest.approx(0.5, abs=0.05)  # the key at t = 1 s is frame 24
+    with pytest.raises(SceneError, match=r"comes down to z = 0\.5"):
+        checks.check_sea(s, "s.toml")
+
+
+@pytest.mark.parametrize(
+    "rows, message",
+    [
+        ("360,0,0.01\n830,0.5,0.001\n", r"a_per_m must lie in \(0, 10000\]"),
+        ("360,0.01,-0.01\n830,0.5,0.001\n", r"b_per_m must lie in \[0, 10000\]"),
+        ("360,1e308,0.01\n830,0.5,0.001\n", r"a_per_m must lie in"),
+        ("360,nan,0.01\n830,0.5,0.001\n", r"(NaN|finite)"),
+        ("360,0.01\n830,0.5\n", r"2 columns but the header names 3"),
+    ],
+)
+def test_iop_tables_that_no_water_has_are_refused(tmp_path, rows, message):
+    table = tmp_path / "iops.csv"
+    table.write_text("# units: nm, m^-1, m^-1; source: this test\n# wavelength_nm,a_per_m,b_per_m\n" + rows)
+    s = with_overrides(scene(), water={"iop_table": str(table)})
+    with pytest.raises(SceneError, match=r"s\.toml: \[water\] iop_table: .*" + message):
+        checks.check_tables(s, "s.toml")
+
+
+def test_a_binary_iop_table_is_refused(tmp_path):
+    table = tmp_path / "iops.csv"
+    table.write_bytes(bytes(range(256)) * 8)
+    with pytest.raises(SceneError, match=r"\[water\] iop_table: "):
+        checks.check_tables(with_overrides(scene(), water={"iop_table": str(table)}), "s.toml")
+
+
+def test_the_output_check_probes_and_sizes(tmp_path):
+    assert checks.check_output(tmp_path / "o", "s.toml", "--out") == tmp_path / "o"
+    with pytest.raises(SceneError, match=r"s\.toml: --out: .*exists and is not a folder; expected a folder"):
+        checks.check_output("/dev/null", "s.toml", "--out")
+    s = scene(output={"resolution": [1000, 500]})
+    assert checks.frame_bytes(s) == 1000 * 500 * (6 * 4 + 3 + 4 * s.output.spectral_bands) + 64 * 1024
