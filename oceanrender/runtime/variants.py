@@ -24,8 +24,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-#: Order of preference of the spectral variants [1]: GPU, CPU JIT. These are the only ones supported.
-SPECTRAL_VARIANTS = ("cuda_ad_spectral", "llvm_ad_spectral")
+from .names import SPECTRAL_VARIANTS  # order of preference [1]: GPU, CPU JIT; the only ones supported
 
 #: Why a scalar variant is refused (one line, for the user).
 SCALAR_REFUSAL = ("is not supported: the renderer needs a JIT backend (cuda_ad_spectral with an NVIDIA driver, or "

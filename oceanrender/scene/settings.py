@@ -22,7 +22,7 @@ from typing import Annotated, Literal
 
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
-from ..runtime.variants import SPECTRAL_VARIANTS
+from ..runtime.names import SPECTRAL_VARIANTS
 
 
 class SceneError(ValueError):

@@ -51,7 +51,7 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[vision]\nexposure = nan\n", "[vision] exposure: Input should be a finite number (got nan)"),
         ("[vision]\nadaptation_time = -0.1\n", "[vision] adaptation_time: Input should be greater than or equal to 0"),
         ("[vision]\nadaptation_time = inf\n", "[vision] adaptation_time: Input should be a finite number"),
-        ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or a spectral variant"),
+        ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or one of cuda_ad_spectral, llvm_ad_spectral"),
         ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
         ("[ocean\n", "not valid TOML"),
         ("[foam]\nthreshold = 0.6\n", "foam: threshold applies to criterion 'Jacobian' only"),
