@@ -712,19 +712,24 @@ COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "coastal": cmd_coast
             "movie": cmd_movie, "info": cmd_info, "bake-luts": cmd_bake_luts, "reference": cmd_reference}
 
 
+def one_line(message: object) -> str:
+    """``message`` with control characters (NUL, newlines, escapes) shown as ``\\xNN``: one printable line."""
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(message))
+
+
 def main(argv: list[str] | None = None) -> int:
     warnings.filterwarnings("ignore", message=".*Matplotlib.*")
     args = build_parser().parse_args(argv)
     try:
         return COMMANDS[args.command](args)
     except (SceneError, UserError) as exc:
-        print(f"oceanrender: error: {exc}", file=sys.stderr)
+        print(f"oceanrender: error: {one_line(exc)}", file=sys.stderr)
         return 2
     except OSError as exc:  # a file system failing mid-run (disk full, folder removed): finished work is kept
         from .io.paths import is_disk_full  # noqa: PLC0415
 
         what = "disk full" if is_disk_full(exc) else (exc.strerror or str(exc))
-        print(f"oceanrender: error: {exc.filename or 'a file'}: {what}; finished frames are kept, "
+        print(f"oceanrender: error: {one_line(exc.filename or 'a file')}: {what}; finished frames are kept, "
               f"rerun the same command to resume", file=sys.stderr)
         return 1
     except MemoryError:

@@ -154,3 +154,38 @@ def test_a_frame_beyond_the_memory_estimate_is_refused_with_it(tmp_path, capsys,
     line = one_error_line(capsys)
     assert "[output] resolution: the run needs about" in line and "GiB" in line
     assert not (tmp_path / "o").exists()
+
+
+def test_a_disk_that_fills_mid_run_is_one_line_and_the_rerun_resumes(tmp_path, capsys, monkeypatch):
+    """ENOSPC while writing frame 1: exit 1, one line, frame 0 kept; the rerun renders only frame 1."""
+    import errno
+
+    from oceanrender import pipeline
+    from oceanrender.io.paths import is_disk_full
+
+    assert is_disk_full(OSError(errno.ENOSPC, "full")) and is_disk_full(OSError(errno.EDQUOT, "quota"))
+    assert not is_disk_full(OSError(errno.EACCES, "denied"))
+    write = pipeline.write_frame
+
+    def full_on_frame_1(paths, rendered):
+        if rendered.frame == 1:
+            raise OSError(errno.ENOSPC, "No space left on device", str(paths.exr))
+        return write(paths, rendered)
+
+    scene, out = tiny_toml(tmp_path, frames=(0, 2)), tmp_path / "o"
+    monkeypatch.setattr(pipeline, "write_frame", full_on_frame_1)
+    assert main(["render", str(scene), "--out", str(out), "--no-progress"]) == 1
+    line = one_error_line(capsys)
+    assert "frame_0001.exr: disk full; finished frames are kept" in line
+    assert sorted(p.name for p in (out / "tiny").iterdir()) == ["frame_0000.exr", "frame_0000.png"]
+    monkeypatch.setattr(pipeline, "write_frame", write)
+    assert main(["render", str(scene), "--out", str(out), "--no-progress"]) == 0
+    assert "skipped 1 already complete" in capsys.readouterr().out
+
+
+def test_errors_show_control_characters_escaped(tmp_path, capsys):
+    scene = tmp_path / "nul.toml"
+    scene.write_text('[water]\niop_table = "a\\u0000b\\nc.csv"\n' + tiny_toml(tmp_path).read_text())
+    assert main(["render", str(scene), "--out", str(tmp_path / "o")]) == 2
+    line = one_error_line(capsys)
+    assert "a\\x00b\\nc.csv" in line and line.isprintable()

@@ -11,7 +11,7 @@ useful range (mostly valid: these examples render), or the file itself broken
 through ``oceanrender render`` (``cli.main``) in a worker process
 (``tests/fuzz_worker.py``), and the outcome must be one of:
 
-* exit 2 with exactly one line on stderr, ``oceanrender: error: …``, and no file
+* exit 2 with exactly one printable line on stderr, ``oceanrender: error: …``, and no file
   written anywhere;
 * exit 0 with the frame's EXR under ``--out``, every pixel finite, and no file
   written outside ``--out``.
@@ -302,7 +302,7 @@ def judge(answer: dict, out: Path, before: set[Path], after: set[Path]) -> tuple
     lines = [line for line in answer["stderr"].splitlines() if line.strip()]
     new = after - before
     if answer["rc"] == 2:
-        if len(lines) != 1 or not lines[0].startswith("oceanrender: error: "):
+        if len(lines) != 1 or not lines[0].startswith("oceanrender: error: ") or not lines[0].isprintable():
             return "bad error", f"expected one line 'oceanrender: error: …' on stderr, got {lines[:5]}"
         if new:
             return "wrote on error", f"files written before the error: {sorted(map(str, new))[:5]}"

@@ -43,12 +43,21 @@ def unresolved_slope_variance(spectrum, cutoff_wavenumber: float, shortest_wavel
     k_max = 2.0 * np.pi / shortest_wavelength
     if k_max <= cutoff_wavenumber:
         return 0.0
-    log_k = np.linspace(np.log(cutoff_wavenumber), np.log(k_max), samples)
+    return spectral_moment(spectrum, cutoff_wavenumber, k_max, 2, samples)
+
+
+def spectral_moment(spectrum, k_min: float, k_max: float, order: int, samples: int = 2048) -> float:
+    """∫∫ k^order Ψ(k, θ) k dk dθ over k_min ≤ k ≤ k_max [m^(2−order)]: order 0 is m₀ [m²], 2 the mss [-].
+
+    Log-spaced radial quadrature (dk = k d ln k, trapezoid), θ by the periodic
+    rectangle rule on 360 directions.
+    """
+    log_k = np.linspace(np.log(k_min), np.log(k_max), samples)
     theta = np.linspace(0.0, 2.0 * np.pi, 361)[:-1]
     k = np.exp(log_k)[:, None]
     psi = spectrum(k * np.cos(theta), k * np.sin(theta))
-    # dk = k d(ln k): integrand k² Ψ k · k over ln k; θ by the periodic rectangle rule.
-    radial = (k[:, 0] ** 4) * psi.mean(axis=1) * 2.0 * np.pi
+    # dk = k d(ln k): the integrand k^order Ψ · k · k over ln k.
+    radial = (k[:, 0] ** (order + 2)) * psi.mean(axis=1) * 2.0 * np.pi
     return float(np.trapezoid(radial, log_k))
 
 
@@ -61,13 +70,7 @@ def elevation_variance(spectrum, k_min: float, k_max: float, samples: int = 2048
     spectrum integrates to the variance by its definition); H_s = 4 √m₀ for
     Rayleigh-distributed wave heights (Longuet-Higgins 1952).
     """
-    log_k = np.linspace(np.log(k_min), np.log(k_max), samples)
-    theta = np.linspace(0.0, 2.0 * np.pi, 361)[:-1]
-    k = np.exp(log_k)[:, None]
-    psi = spectrum(k * np.cos(theta), k * np.sin(theta))
-    # dk = k d(ln k): integrand Ψ k · k over ln k; θ by the periodic rectangle rule.
-    radial = (k[:, 0] ** 2) * psi.mean(axis=1) * 2.0 * np.pi
-    return float(np.trapezoid(radial, log_k))
+    return spectral_moment(spectrum, k_min, k_max, 0, samples)
 
 
 def beckmann_alpha(mean_square_slope: float) -> float:

@@ -279,8 +279,8 @@ def test_killed_runs_resume_exactly(tmp_path):
     """SIGKILL at a random moment of the simulation, rerun to completion: every frame as the uninterrupted run's.
 
     The reference run is timed from its first checkpoint (after start-up and
-    compilation) to its end; each trial is killed that far into the reference's
-    simulation, drawn uniformly (seeded), after its own first checkpoint.
+    compilation) to its end; each trial is killed a fraction of that time, drawn
+    uniformly in [0, 0.75] (seeded), after its own first checkpoint.
     ``OCEANRENDER_KILL_TRIALS`` sets the number of trials (default 3).
     """
     trials = int(os.environ.get("OCEANRENDER_KILL_TRIALS", "3"))
@@ -297,7 +297,7 @@ def test_killed_runs_resume_exactly(tmp_path):
     outcomes = []
     for trial in range(trials):
         store = tmp_path / f"trial_{trial}"
-        delay = rng.uniform(0.0, 0.9) * simulating
+        delay = rng.uniform(0.0, 0.75) * simulating
         proc, _ = start_run(scene, store)
         wait_for(store / "checkpoint.npz", proc)
         time.sleep(delay)
@@ -315,4 +315,7 @@ def test_killed_runs_resume_exactly(tmp_path):
     for delay, alive, stored, summary in outcomes:
         print(f"  kill {delay:.3f} s after the first checkpoint, {'running' if alive else 'ALREADY DONE'}, "
               f"{stored} frame files left; rerun: {summary}")
-    assert all(alive for _, alive, _, _ in outcomes), "a trial ended before its kill: the kill landed after the run"
+    # Each trial is checked for bit-identity above, whether or not its kill landed before the run ended
+    # (run times vary by ±30 % on a loaded machine); the test is only meaningful if kills land mid-run.
+    alive = sum(alive for _, alive, _, _ in outcomes)
+    assert alive >= max(1, (2 * trials) // 3), f"only {alive} of {trials} kills landed while the run was simulating"
