@@ -9,14 +9,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from .scene import sun_direction, sunsky_emitter
+from .scene import meter_reading, sun_direction, sunsky_emitter, white_plane_meter
 
 
 def sky_irradiance_spectra(sun, wavelengths: np.ndarray, spp: int = 4096, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """Direct-normal and diffuse horizontal irradiance of Mitsuba's ``sunsky`` [W m⁻² nm⁻¹].
 
-    Measured as π × the radiance of a white Lambertian plane (Lambert's law)
-    through a ``specfilm`` with one 5-nm box band per wavelength, once with the
+    Measured as π × the radiance of a white Lambertian plane (Lambert's law;
+    :func:`~oceanrender.render.scene.white_plane_meter`, the same readings in
+    every process) through a ``specfilm`` with one 5-nm box band per wavelength, once with the
     sky alone and once with the sun alone (its horizontal irradiance divided
     by cos θ_s gives the direct-normal value). Needs an active Mitsuba variant.
     """
@@ -29,16 +30,8 @@ def sky_irradiance_spectra(sun, wavelengths: np.ndarray, spp: int = 4096, seed: 
 
     def horizontal(sky_scale: float, sun_scale: float) -> np.ndarray:
         emitter = {**sunsky_emitter(sun), "sky_scale": sky_scale * sun.sky_scale, "sun_scale": sun_scale * sun.sun_scale}
-        scene = mi.load_dict({
-            "type": "scene",
-            "integrator": {"type": "path", "max_depth": 2},
-            "sensor": {"type": "radiancemeter", "origin": [0, 0, 1], "direction": [0, 0, -1], "film": film,
-                       "sampler": {"type": "independent", "sample_count": int(spp)}},
-            "sky": emitter,
-            "ground": {"type": "disk", "to_world": mi.ScalarTransform4f().scale([1e4, 1e4, 1]),
-                       "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}}},
-        })
-        band_integrals = np.array(mi.render(scene, seed=seed)).ravel()
+        scene = mi.load_dict(white_plane_meter(emitter, film, spp))
+        band_integrals = meter_reading(mi.render(scene, seed=seed))
         return np.pi * band_integrals / (2 * half)  # E = π L, per nm
 
     cos_sun = float(sun_direction(sun.elevation, sun.azimuth)[2])

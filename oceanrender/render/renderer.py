@@ -22,12 +22,14 @@ from .scene import (
     apply_camera,
     apply_sun,
     irregular_spectrum,
+    meter_reading,
     perspective_sensor,
     sun_direction,
     sunsky_emitter,
     volumetric_integrator,
     water_medium,
     water_surface_bsdf,
+    white_plane_meter,
     xyz_film,
 )
 
@@ -344,33 +346,19 @@ class WhiteMeter:
     The radiance of a perfectly white Lambertian plane is L = E/π, with E the
     horizontal spectral irradiance of sun + sky (Lambert's cosine law), so
     :meth:`measure` gives the adapting white of the vision model in the same
-    spectra and units as the frames. It is measured with a ``radiancemeter``
+    spectra and units as the frames. It is measured by an orthographic sensor
     looking straight down at a large white ``diffuse`` disk under the same
-    ``sunsky`` emitter (key ``"sky"``), with next-event estimation (``path``,
-    one bounce). :meth:`point_sun` moves the sun in place, so a moving sun
+    ``sunsky`` emitter (key ``"sky"``), one sample per pixel
+    (:func:`~oceanrender.render.scene.white_plane_meter`: identical readings in
+    every process), with next-event estimation (``path``, one bounce). :meth:`point_sun` moves the sun in place, so a moving sun
     costs one small render per frame, not a scene load (and its compilation).
     """
 
     def __init__(self, settings: Scene, spp: int | None = None):
         import mitsuba as mi  # noqa: PLC0415
 
-        self.scene = mi.load_dict({
-            "type": "scene",
-            "integrator": {"type": "path", "max_depth": 2},
-            "sensor": {
-                "type": "radiancemeter",
-                "origin": [0.0, 0.0, 1.0],
-                "direction": [0.0, 0.0, -1.0],
-                "film": {**xyz_film(1, 1), "rfilter": {"type": "box"}},
-                "sampler": {"type": "independent", "sample_count": int(spp or settings.render.white_spp)},
-            },
-            "sky": sunsky_emitter(settings.sun),
-            "ground": {
-                "type": "disk",
-                "to_world": mi.ScalarTransform4f().scale([1.0e4, 1.0e4, 1.0]),
-                "bsdf": {"type": "diffuse", "reflectance": {"type": "spectrum", "value": 1.0}},
-            },
-        })
+        self.scene = mi.load_dict(white_plane_meter(sunsky_emitter(settings.sun), xyz_film(1, 1),
+                                                    int(spp or settings.render.white_spp)))
         self.params = mi.traverse(self.scene)
 
     def point_sun(self, elevation: float, azimuth: float) -> None:
@@ -381,8 +369,7 @@ class WhiteMeter:
         """XYZ [cd m⁻²] of the white plane under the current sun and sky."""
         import mitsuba as mi  # noqa: PLC0415
 
-        film = np.array(mi.render(self.scene, seed=int(seed)))
-        return film_to_absolute_XYZ(film).reshape(3)
+        return film_to_absolute_XYZ(meter_reading(mi.render(self.scene, seed=int(seed)))).reshape(3)
 
 
 def adapting_white_XYZ(settings: Scene, spp: int | None = None, seed: int = 0) -> np.ndarray:

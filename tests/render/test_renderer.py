@@ -130,3 +130,28 @@ def test_sample_passes_stay_within_32_bit_sample_indices(pixels, spp):
     assert seeds[0] == 2**32 - 1 and len(set(seeds)) == len(seeds) and all(0 <= s < 2**32 for s in seeds)
     if pixels * spp <= MAX_SAMPLES_PER_PASS:
         assert passes == [(spp, 2**32 - 1)]  # a frame that fits renders in one pass, as before
+
+
+WHITE_IN_A_PROCESS = """
+from oceanrender.runtime.variants import activate_variant
+activate_variant("llvm_ad_spectral")
+from oceanrender.scene import scene_from_dict
+from oceanrender.render.renderer import adapting_white_XYZ
+print([x.hex() for x in adapting_white_XYZ(scene_from_dict({"name": "w"}), 16384).tolist()])
+"""
+
+
+def test_the_white_meter_reads_the_same_in_every_process(variant):
+    """Three processes at once, the same scene and seed: identical adapting whites, bit for bit.
+
+    A 1-pixel meter differed here (drjit sums a pixel's samples in the order its threads finish);
+    a resumed sequence must colour its frames exactly as an uninterrupted one.
+    """
+    import subprocess
+    import sys
+
+    procs = [subprocess.Popen([sys.executable, "-c", WHITE_IN_A_PROCESS], stdout=subprocess.PIPE, text=True)
+             for _ in range(3)]
+    readings = [proc.communicate(timeout=300)[0].strip().splitlines()[-1] for proc in procs]
+    assert all(proc.returncode == 0 for proc in procs)
+    assert len(set(readings)) == 1, readings
