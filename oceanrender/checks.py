@@ -173,13 +173,32 @@ def check_sea(scene: Scene, source: str) -> None:
                          f"views are not supported yet")
 
 
+#: Bytes per grid point and cascade of one frame of wave maps: 4 EXR maps × 3 float32 channels (export/wave_maps.py).
+GEOMETRY_FRAME_BYTES_PER_POINT = 4 * 3 * 4
+#: Bytes per cell of one stored coastal frame, rounded up from the .npz fields (h, hu, hv: 3 float64) and the
+#: EXR (h, η, u, v, bed: 5 float32), 44 B, to leave room for the checkpoint.
+COASTAL_FRAME_BYTES_PER_CELL = 96
+#: Room kept beyond a run's first files, for sidecars, metadata and PNGs [bytes].
+SLACK_BYTES = 16 * MiB
+
+
+def geometry_frame_bytes(scene: Scene) -> float:
+    """One frame of ``oceanrender geometry``'s wave maps, all cascades [bytes]."""
+    return scene.ocean.cascades * scene.ocean.resolution ** 2 * GEOMETRY_FRAME_BYTES_PER_POINT + SLACK_BYTES
+
+
+def coastal_frame_bytes(scene: Scene) -> float:
+    """One stored frame of the coastal simulation (fields and EXR) [bytes]."""
+    return scene.coastal.cells[0] * scene.coastal.cells[1] * COASTAL_FRAME_BYTES_PER_CELL + SLACK_BYTES
+
+
 def frame_bytes(scene: Scene) -> float:
     """Largest size of one rendered frame's files [bytes]: EXR (6 float32 channels), PNG, spectral EXR."""
     width, height = scene.output.resolution
     return width * height * (6 * 4 + 3 + 4 * scene.output.spectral_bands) + 64 * 1024
 
 
-def check_output(folder: str | Path, source: str, key: str, needed_bytes: float = 16 * MiB) -> Path:
+def check_output(folder: str | Path, source: str, key: str, needed_bytes: float = SLACK_BYTES) -> Path:
     """Create and probe an output folder (see :func:`oceanrender.io.paths.check_output_folder`)."""
     from .io.paths import PathProblem, check_output_folder  # noqa: PLC0415
 

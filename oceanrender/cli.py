@@ -190,7 +190,7 @@ def check_run(scene: Scene, source: str, out: Path, out_key: str, *, tables: boo
         checks.check_sea(scene, source)
     checks.check_memory(scene, source, renders=renders)
     return checks.check_output(out, source, out_key, needed_bytes if needed_bytes is not None
-                               else 2 * checks.frame_bytes(scene) + 16 * checks.MiB)
+                               else 2 * checks.frame_bytes(scene) + checks.SLACK_BYTES)
 
 
 def scene_folder(scene: Scene, source: str) -> Path:
@@ -396,9 +396,10 @@ def cmd_geometry(args: argparse.Namespace) -> int:
         scene = with_overrides(scene, "command line", output={"frames": args.frames})
     if scene.ocean.model != "FFT":
         raise UserError(f"{args.scene}: [ocean] model: geometry export needs 'FFT', got {scene.ocean.model!r}")
-    res = scene.ocean.resolution
+    from .checks import geometry_frame_bytes  # noqa: PLC0415
+
     check_run(scene, str(args.scene), args.out, "--out", tables=False, sea=args.ply, renders=args.camera_mesh,
-              needed_bytes=scene.ocean.cascades * res * res * 4 * 12 + 16 * (1 << 20))
+              needed_bytes=geometry_frame_bytes(scene))
     from .waves.sea import SeaSurface  # noqa: PLC0415
     from .export.wave_maps import export_geometry_sequence  # noqa: PLC0415
 
@@ -469,9 +470,10 @@ def cmd_coastal(args: argparse.Namespace) -> int:
         scene = with_overrides(scene, "command line", output={"frames": args.frames})
     if scene.coastal is None:
         raise UserError(f"{args.scene}: [coastal]: the scene has no coastal section to simulate")
-    cells = scene.coastal.cells[0] * scene.coastal.cells[1]
+    from .checks import coastal_frame_bytes  # noqa: PLC0415
+
     check_run(scene, str(args.scene), args.out, "--out", tables=False, sea=False, renders=False,
-              needed_bytes=cells * 8 * 12 + 16 * (1 << 20))
+              needed_bytes=coastal_frame_bytes(scene))
     from tqdm import tqdm  # noqa: PLC0415
 
     from .coastal.simulation import run_simulation  # noqa: PLC0415

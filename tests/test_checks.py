@@ -106,3 +106,11 @@ def test_the_output_check_probes_and_sizes(tmp_path):
         checks.check_output("/dev/null", "s.toml", "--out")
     s = scene(output={"resolution": [1000, 500]})
     assert checks.frame_bytes(s) == 1000 * 500 * (6 * 4 + 3 + 4 * s.output.spectral_bands) + 64 * 1024
+
+
+def test_the_free_space_floors_follow_the_files_a_frame_writes():
+    s = scene(ocean={**OCEAN, "cascades": 3})
+    assert checks.geometry_frame_bytes(s) == 3 * 64**2 * 4 * 3 * 4 + checks.SLACK_BYTES  # 4 maps × RGB float32
+    coast = scene_from_dict({"name": "c", "coastal": {"cells": [40, 30], "size": [8.0, 6.0]}})
+    per_cell = 3 * 8 + 5 * 4  # the .npz's h, hu, hv (float64) and the EXR's five float32 channels
+    assert checks.coastal_frame_bytes(coast) >= 40 * 30 * per_cell + checks.SLACK_BYTES
