@@ -39,6 +39,8 @@ MAX_FRAME = 10_000_000
 MIN_SUN_ELEVATION = 0.5
 #: Largest scene file accepted [bytes].
 MAX_SCENE_BYTES = 1 << 20
+#: A scene name: a safe folder name (no "..", no hidden folder, no separator), at most 100 characters.
+SAFE_NAME = r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}"
 
 
 class _Section(BaseModel):
@@ -394,8 +396,8 @@ class SunSettings(_Section):
                 return data  # reported with its key when the field itself is validated
             elevation, azimuth = settings.angles_at(0.0)
             if not elevation >= MIN_SUN_ELEVATION:
-                raise ValueError(f"[sun.clock]: the sun is below the horizon (or within {MIN_SUN_ELEVATION}° of it) at start ({settings.start.isoformat()}, "
-                                 f"t = 0 s): elevation {elevation:.2f} deg; sunsky needs it above")
+                raise ValueError(f"[sun.clock]: the sun is below the horizon (or within {MIN_SUN_ELEVATION}° of it) "
+                                 f"at start ({settings.start.isoformat()}, t = 0 s): elevation {elevation:.2f} deg; sunsky needs it above")
             return _first_key_fills(data, {"elevation": elevation, "azimuth": azimuth}, "sun")
         return data
 
@@ -596,7 +598,7 @@ class CoastalSettings(_Section):
 class Scene(_Section):
     """A whole scene; ``name`` defaults to the file's stem."""
 
-    name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_][A-Za-z0-9_.-]*$",
+    name: str = Field(..., min_length=1, max_length=100, pattern=f"^{SAFE_NAME}$",
                       description="the scene's folder name under the output directory: letters, digits, '_', "
                                   "'.', '-', not starting with '.' or '-'")
     output: OutputSettings = OutputSettings()
@@ -638,8 +640,8 @@ class Scene(_Section):
             for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
                 elevation = motion.at(t).elevation
                 if not elevation >= MIN_SUN_ELEVATION:
-                    raise ValueError(f"{where}: the sun is below the horizon (or within {MIN_SUN_ELEVATION}° of it) at frame {frame} (t = {t:g} s): "
-                                     f"elevation {elevation:.2f} deg; sunsky needs it above over the frame range")
+                    raise ValueError(f"{where}: the sun is below the horizon (or within {MIN_SUN_ELEVATION}° of "
+                                     f"it) at frame {frame} (t = {t:g} s): elevation {elevation:.2f} deg; sunsky needs it above over the frame range")
         return value
 
     @model_validator(mode="after")
@@ -790,7 +792,7 @@ def load_scene(path: str | Path) -> Scene:
     except RecursionError:
         raise SceneError(f"{path}: not usable TOML: tables or arrays nested too deeply") from None
     if "name" not in data:
-        if not _SAFE_NAME.fullmatch(path.stem):
+        if not re.fullmatch(SAFE_NAME, path.stem):
             raise SceneError(f"{path}: name: the file's name {path.stem!r} is not a safe folder name (letters, "
                              f"digits, '_', '.', '-', not starting with '.' or '-'); give name = \"...\" in the file")
         data["name"] = path.stem
@@ -798,9 +800,6 @@ def load_scene(path: str | Path) -> Scene:
     scene = scene_from_dict(data, str(path))
     check_scene_inputs(scene, str(path))
     return scene
-
-
-_SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
 
 
 def resolve_scene_paths(data: dict, folder: Path) -> None:
