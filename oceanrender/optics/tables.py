@@ -87,7 +87,7 @@ def read_spectral_table(path: str | Path, required: tuple[str, ...] = (), cover:
         raise SpectralDataError(f"{path}: a spectral table needs a '#' header with units and source")
     names = header[-1].split(",")
     try:
-        data = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
+        data = np.loadtxt(lines, delimiter=",", comments="#", ndmin=2)  # the checked bytes, not a second read
     except (ValueError, IndexError) as exc:
         raise SpectralDataError(f"{path}: malformed numbers ({exc})") from None
     if data.shape[1] != len(names):
