@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Iterator
 
 from . import __version__
-from .scene import Scene, SceneError, load_scene, with_overrides
+from .scene import Scene, SceneError, load_scene, with_overrides, with_view
 
 
 class UserError(Exception):
@@ -55,6 +55,8 @@ def build_parser() -> argparse.ArgumentParser:
     render.add_argument("--denoise", action="store_true", help="denoise each frame (Intel Open Image Denoise)")
     render.add_argument("--exposure", type=float, metavar="EV",
                         help="exposure compensation in EV, -10..10 (default: the scene's [vision] exposure)")
+    render.add_argument("--view", metavar="NAME",
+                        help="render from the scene's [camera.views.NAME] into OUT/<scene name>_NAME/")
     where = render.add_mutually_exclusive_group()
     where.add_argument("--workers", type=int, metavar="N",
                        help="render frames on a local Dask cluster of N worker processes")
@@ -171,6 +173,8 @@ def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
     if getattr(args, "denoise", False):
         render["denoise"] = True
     vision = {"exposure": args.exposure} if getattr(args, "exposure", None) is not None else {}
+    if getattr(args, "view", None) is not None:
+        scene = with_view(scene, args.view)
     return with_overrides(scene, "command line", output=output, render=render, vision=vision)
 
 

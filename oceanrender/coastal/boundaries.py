@@ -376,7 +376,10 @@ class _IncidentSide:
             zeros = np.zeros(self.depth.shape)
             return zeros, zeros
         clock = np.exp(-1j * self.omega * t) * self.wave.ramp(t)
-        return (clock @ self.eta_coefficients).real, (clock @ self.u_coefficients).real
+        # NOTE: einsum's own loop, not BLAS: a threaded BLAS call between the solver's stages competes
+        # with the solver's threads (measured 16 ms instead of 0.2 ms per call for 442 × 400 terms).
+        return (np.einsum("n,ns->s", clock, self.eta_coefficients).real,
+                np.einsum("n,ns->s", clock, self.u_coefficients).real)
 
 
 class BoundaryPlan:

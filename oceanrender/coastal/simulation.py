@@ -121,18 +121,14 @@ def checkpoint_due(previous: float, tau: float, interval: float) -> bool:
 def solver_for_scene(scene) -> tuple[ShallowWaterSolver, np.ndarray, State]:
     """(solver, bed z_b [m], initial state at τ = 0) of the scene's [coastal] section."""
     coastal = scene.coastal
-    spectrum = None
-    if coastal.waves == "spectrum":
-        from ..waves.sea import directional_spectrum  # noqa: PLC0415
-
-        spectrum = directional_spectrum(scene.ocean)
     dx, dy = coastal.spacing
     params = SolverParams(dx=dx, dy=dy, order=coastal.order, cfl=coastal.cfl, h_min=coastal.h_min,
                           limiter=coastal.limiter,
-                          manning=coastal.manning, boundaries=inputs.boundaries(coastal, spectrum))
+                          manning=coastal.manning, boundaries=inputs.boundaries(coastal, scene.ocean))
     bed = arrays.bathymetry(coastal)
     h = arrays.initial_depth(coastal, bed)
-    state = State(h=h, hu=np.zeros_like(h), hv=np.zeros_like(h), t=0.0)
+    hu, hv = arrays.initial_discharges(coastal, h)
+    state = State(h=h, hu=hu, hv=hv, t=0.0)
     return ShallowWaterSolver(bed, params), bed, state
 
 

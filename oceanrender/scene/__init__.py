@@ -17,9 +17,10 @@ from .settings import (
     load_scene,
     scene_from_dict,
     with_overrides,
+    with_view,
 )
 
 __all__ = [
     "CameraSettings", "FoamSettings", "MeshSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
-    "SunSettings", "VisionSettings", "WaterSettings", "load_scene", "scene_from_dict", "with_overrides",
+    "SunSettings", "VisionSettings", "WaterSettings", "load_scene", "scene_from_dict", "with_overrides", "with_view",
 ]

@@ -21,6 +21,8 @@ from numpy.typing import NDArray
 EXR_CHANNELS = ("Z", "Y", "R", "V")
 #: Largest array file a scene may name [bytes] (a 16384² float64 grid is 2 GiB).
 MAX_ARRAY_BYTES = 2 << 30
+#: Largest initial speed a scene may give [m s⁻¹] (a tsunami bore runs at ~10; beyond 30 is a typo).
+MAX_INITIAL_SPEED = 30.0
 #: Most elements an array file may hold (its header is read, and checked, before its data).
 MAX_ARRAY_ELEMENTS = 16384 * 16384
 
@@ -161,6 +163,43 @@ def initial_depth(coastal, bed: NDArray) -> NDArray[np.float64]:
     return np.maximum(eta - bed, 0.0)
 
 
+def initial_discharges(coastal, depth: NDArray) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Initial discharges (hu, hv) [m² s⁻¹] from ``initial_u``/``initial_v`` [m s⁻¹] and the depth h [m].
+
+    Each velocity is a uniform value or an array file (ny, nx) along the grid's
+    axes; cells with h ≤ ``h_min`` (land) get none, as the solver requires.
+    """
+    wet = np.asarray(depth) > coastal.h_min
+    out = []
+    for key in ("initial_u", "initial_v"):
+        value = getattr(coastal, key)
+        if isinstance(value, str):
+            velocity = check_array(read_array(value, coastal.shape), coastal.shape)
+        else:
+            velocity = np.full(coastal.shape, float(value))
+        out.append(np.where(wet, velocity * depth, 0.0))
+    return out[0], out[1]
+
+
+def offshore_depth(coastal, bed: NDArray) -> float:
+    """Mean still-water depth [m] of the wet cells along the offshore side of the bed (ny, nx) [m]."""
+    row = {"north": bed[-1, :], "south": bed[0, :], "east": bed[:, -1], "west": bed[:, 0]}[coastal.offshore_side]
+    depth = coastal.still_level - np.asarray(row, float)
+    wet = depth > coastal.h_min
+    if not np.any(wet):
+        raise ValueError(f"offshore_side: the {coastal.offshore_side} side is dry: no sea can enter there")
+    return float(np.mean(depth[wet]))
+
+
+def check_velocity(velocity: NDArray, limit: float) -> None:
+    """ValueError unless every |velocity| ≤ ``limit`` [m s⁻¹] (first bad cell named)."""
+    bad = np.abs(velocity) > limit
+    if np.any(bad):
+        j, i = np.argwhere(bad)[0]
+        raise ValueError(f"expected speeds within ±{limit:g} m/s, got {velocity[j, i]:g} at cell (row {j}, "
+                         f"column {i})")
+
+
 def check_coastal_inputs(coastal) -> None:
     """Read and check every array input (shape, finiteness); ValueError naming the key.
 
@@ -169,12 +208,14 @@ def check_coastal_inputs(coastal) -> None:
     ValueError
         ``"<key>: <problem>"`` for the first bad input.
     """
-    for key in ("bathymetry", "initial_surface"):
+    for key in ("bathymetry", "initial_surface", "initial_u", "initial_v"):
         value = getattr(coastal, key)
-        if value in ("plane beach", "still"):
+        if not isinstance(value, str) or value in ("plane beach", "still"):
             continue
         try:
-            check_array(read_array(value, coastal.shape), coastal.shape)
+            array = check_array(read_array(value, coastal.shape), coastal.shape)
+            if key.startswith("initial_") and key != "initial_surface":
+                check_velocity(array, MAX_INITIAL_SPEED)
         except (OSError, ValueError, RuntimeError) as exc:
             raise ValueError(f"{key}: {value}: {exc}") from None
     bed = bathymetry(coastal)

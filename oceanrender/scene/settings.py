@@ -23,6 +23,7 @@ from typing import Annotated, Literal
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 from ..runtime.names import SPECTRAL_VARIANTS
+from .arrays import MAX_INITIAL_SPEED
 
 
 class SceneError(ValueError):
@@ -438,6 +439,20 @@ class CameraKeySettings(_Section):
         return self
 
 
+class CameraViewSettings(_Section):
+    """Another viewpoint of the same scene (``[camera.views.NAME]``), rendered with ``oceanrender render --view NAME``."""
+
+    position: Vec3 = Field(..., description="camera position [m]")
+    target: Vec3 = Field(..., description="point looked at [m]")
+    fov: float = Field(60.0, gt=0, lt=180, description="horizontal field of view [deg]")
+
+    @model_validator(mode="after")
+    def _distinct(self) -> "CameraViewSettings":
+        if self.position == self.target:
+            raise ValueError("target must differ from position")
+        return self
+
+
 class CameraSettings(_Section):
     """Pinhole camera (perspective).
 
@@ -453,6 +468,9 @@ class CameraSettings(_Section):
     keys: tuple[CameraKeySettings, ...] = Field((), description="camera keyframes (time [s], position, target [m], "
                                                                 "fov [deg])")
     interpolation: Interpolation = Field("monotone cubic", description="curve through the camera keyframes")
+    views: dict[Annotated[str, Field(pattern=f"^{SAFE_NAME}$", max_length=40)], CameraViewSettings] = Field(
+        default_factory=dict, description="other still viewpoints by name (render with --view NAME into the "
+                                          "folder <name>_<view>)")
 
     @model_validator(mode="before")
     @classmethod
@@ -483,6 +501,8 @@ class CameraSettings(_Section):
     def _distinct(self) -> "CameraSettings":
         if self.position == self.target:
             raise ValueError("camera target must differ from its position")
+        if self.views and self.keys:
+            raise ValueError("views are still viewpoints: leave them out of a camera with keys")
         return self
 
     @property
@@ -519,6 +539,9 @@ class VisionSettings(_Section):
         return value
 
 
+#: How closely [ocean] wave_depth must match the offshore side's mean depth with waves = "open sea" [-].
+OPEN_SEA_DEPTH_MATCH = 0.05
+
 #: Array files accepted for bathymetry and the initial surface (rows = y south → north, columns = x).
 ARRAY_SUFFIXES = (".npy", ".exr")
 
@@ -539,14 +562,29 @@ class CoastalSettings(_Section):
     cells: tuple[Annotated[int, Field(ge=4, le=8192)], Annotated[int, Field(ge=4, le=8192)]] = Field(
         (320, 240), description="cells along x and y [-]")
     origin: tuple[float, float] = Field((-20.0, -6.0), description="world (x, y) of the grid's south-west corner [m]")
+    rotation: float = Field(0.0, ge=-360, le=360, description="angle from the world axes to the grid's axes, "
+                                                              "counter-clockwise about origin [deg]")
+    blend_width: float = Field(40.0, gt=0, le=1e5, description="('open sea') width of the zone inside the offshore "
+                                                               "and lateral sides where the solver's surface fades "
+                                                               "into the FFT sea's [m]")
+    outer_slope: float = Field(0.02, ge=0, le=1, description="('open sea') fall of the sea floor per metre beyond "
+                                                             "the offshore side [-]")
+    outer_depth: float = Field(30.0, gt=0, le=11_000, description="('open sea') greatest depth of the sea floor "
+                                                                  "beyond the offshore side [m]")
     bathymetry: str = Field("plane beach", description="'plane beach', or a .npy/.exr file of bed elevation [m]")
     still_level: float = Field(0.0, description="still-water level [m]")
     shoreline_y: float = Field(0.0, description="('plane beach') y where the bed meets the still level [m]")
     slope: float = Field(0.05, gt=0, le=1, description="('plane beach') rise of the bed per metre towards the shore [-]")
     offshore_depth: float = Field(2.0, gt=0, description="('plane beach') greatest still-water depth [m]")
     initial_surface: str = Field("still", description="'still', or a .npy/.exr file of the surface elevation η [m]")
-    waves: Literal["train", "spectrum", "none"] = Field(
-        "train", description="incident waves: a monochromatic 'train', components of the [ocean] 'spectrum', or 'none'")
+    initial_u: float | str = Field(0.0, description="initial depth-averaged velocity along the grid's x axis: a "
+                                                    "uniform value or a .npy/.exr file (ny, nx) [m s⁻¹]; 0 on dry cells")
+    initial_v: float | str = Field(0.0, description="initial depth-averaged velocity along the grid's y axis: a "
+                                                    "uniform value or a .npy/.exr file (ny, nx) [m s⁻¹]; 0 on dry cells")
+    waves: Literal["train", "spectrum", "open sea", "none"] = Field(
+        "train", description="incident waves: a monochromatic 'train', components of the [ocean] 'spectrum', the "
+                             "long waves of the surrounding FFT sea ('open sea': the domain sits inside it, to the "
+                             "horizon), or 'none'")
     wave_height: float = Field(0.3, ge=0, le=10, description="('train') crest-to-trough height [m]")
     wave_period: float = Field(5.0, gt=0, le=30, description="('train') period [s]")
     wave_direction: float = Field(-90.0, ge=-360, le=360,
@@ -575,6 +613,17 @@ class CoastalSettings(_Section):
         if info.data.get("order") == 2 and value > 0.5:
             raise ValueError(f"must be ≤ 0.5 at order 2 (the scheme's positivity bound), got {value}")
         return value
+
+    @field_validator("initial_u", "initial_v")
+    @classmethod
+    def _velocity(cls, value: float | str) -> float | str:
+        if isinstance(value, str):
+            if not value.lower().endswith(ARRAY_SUFFIXES):
+                raise ValueError(f"expected a velocity [m/s] or a {'/'.join(ARRAY_SUFFIXES)} file, got {value!r}")
+            return value
+        if not (math.isfinite(value) and abs(value) <= MAX_INITIAL_SPEED):
+            raise ValueError(f"expected a finite velocity within ±{MAX_INITIAL_SPEED:g} m/s, got {value}")
+        return float(value)
 
     @field_validator("bathymetry", "initial_surface")
     @classmethod
@@ -655,11 +704,38 @@ class Scene(_Section):
     @model_validator(mode="after")
     def _camera_above_water(self) -> "Scene":
         level = self.coastal.still_level if self.coastal is not None else 0.0
-        positions = [self.camera.position] + [key.position for key in self.camera.keys]
+        positions = ([self.camera.position] + [key.position for key in self.camera.keys]
+                     + [view.position for view in self.camera.views.values()])
         low = min(position[2] for position in positions)
         if low <= level:
             raise ValueError(f"[camera] position: the camera is at z = {low:g} m, at or below the still water "
                              f"level {level:g} m; under-water views are not supported yet")
+        return self
+
+    @model_validator(mode="after")
+    def _coast_in_open_sea(self) -> "Scene":
+        coastal = self.coastal
+        if coastal is None or coastal.waves != "open sea":
+            return self
+        needs = [
+            (self.ocean.model == "FFT", "[ocean] model: must be 'FFT': the coast inside the open sea takes the FFT "
+                                        "sea's own modes"),
+            (self.mesh.kind == "radial", "[mesh] kind: must be 'radial': the open sea around the coast reaches the "
+                                         "horizon on the camera's radial mesh"),
+            (coastal.still_level == 0.0, "[coastal] still_level: must be 0 m with waves = 'open sea' (the FFT sea's "
+                                         "mean level)"),
+            (not self.camera.animated, "[camera] keys: the coast inside the open sea needs a still camera (its "
+                                       "terrain is built once, on the camera's radial mesh)"),
+            (math.isfinite(self.ocean.wave_depth),
+             "[ocean] wave_depth: must be finite with waves = 'open sea': the sea's dispersion relation at the "
+             "offshore depth is what the solver's side takes"),
+            (self.water.depth > coastal.outer_depth + 1.0,
+             f"[water] depth: must exceed [coastal] outer_depth + 1 m = {coastal.outer_depth + 1.0:g} m (the body's "
+             f"bottom lies below the sea floor), got {self.water.depth:g}"),
+        ]
+        for ok, message in needs:
+            if not ok:
+                raise ValueError(message)
         return self
 
     @field_validator("composition")
@@ -805,13 +881,13 @@ def load_scene(path: str | Path) -> Scene:
 def resolve_scene_paths(data: dict, folder: Path) -> None:
     """Make the file paths of a parsed scene absolute, in place, the one documented way.
 
-    Array files ([coastal] bathymetry, initial_surface) and an ``iop_table``
+    Array files ([coastal] bathymetry, initial_surface, initial_u, initial_v) and an ``iop_table``
     that is a path (holds a ``/``) are relative to the scene file's folder; a
     bare table name is a table in ``spectra/`` and is left as it is.
     """
     coastal = data.get("coastal")
     if isinstance(coastal, dict):
-        for key in ("bathymetry", "initial_surface"):
+        for key in ("bathymetry", "initial_surface", "initial_u", "initial_v"):
             value = coastal.get(key)
             if isinstance(value, str) and value.lower().endswith(ARRAY_SUFFIXES) and "\x00" not in value:
                 coastal[key] = os.path.abspath(folder / value)
@@ -832,6 +908,31 @@ def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
         check_coastal_inputs(scene.coastal)
     except ValueError as exc:
         raise SceneError(f"{source}: [coastal] {exc}") from None
+    if scene.coastal.waves == "open sea":
+        from .arrays import bathymetry, offshore_depth  # noqa: PLC0415
+
+        try:
+            depth = offshore_depth(scene.coastal, bathymetry(scene.coastal))
+        except ValueError as exc:
+            raise SceneError(f"{source}: [coastal] {exc}") from None
+        if abs(scene.ocean.wave_depth - depth) > OPEN_SEA_DEPTH_MATCH * depth:
+            raise SceneError(f"{source}: [ocean] wave_depth: must equal the mean still depth along the "
+                             f"[coastal] offshore side, {depth:.3g} m, within {OPEN_SEA_DEPTH_MATCH:.0%} with waves = "
+                             f"'open sea' (one dispersion relation on both sides of the join), got "
+                             f"{scene.ocean.wave_depth:g}")
+
+
+def with_view(scene: Scene, view: str, source: str = "command line") -> Scene:
+    """The scene seen from its ``[camera.views.<view>]``, named ``<name>_<view>``; SceneError if it has no such view."""
+    views = scene.camera.views
+    if view not in views:
+        have = ", ".join(sorted(views)) or "none"
+        raise SceneError(f"{source}: --view {view}: the scene has no [camera.views.{view}] (its views: {have})")
+    data = scene.model_dump()
+    chosen = views[view]
+    data["camera"] = {**data["camera"], "position": chosen.position, "target": chosen.target, "fov": chosen.fov}
+    data["name"] = f"{scene.name}_{view}"[:100]
+    return scene_from_dict(data, source)
 
 
 def with_overrides(scene: Scene, source: str = "command line", **sections: dict) -> Scene:

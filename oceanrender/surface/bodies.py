@@ -2,7 +2,9 @@
 
 :func:`scene_water_body` picks the open sea (:class:`~.open_sea.WaterBody`) or, for a
 scene with a ``[coastal]`` section, the coastal body read from its simulation
-(:class:`~.coastal_body.CoastalBody`); both meet :class:`~.frame.WaterSurface`.
+(:class:`~.coastal_body.CoastalBody`), or, with ``[coastal] waves = "open sea"``,
+the coast inside the open sea (:class:`~.coast_in_sea.CoastInSea`); all meet
+:class:`~.frame.WaterSurface`.
 """
 
 from __future__ import annotations
@@ -23,6 +25,10 @@ def scene_water_body(scene: Scene, coastal_store: str | Path | None = None) -> W
         return WaterBody(scene)
     if coastal_store is None:
         raise ValueError("a coastal scene renders from its simulation's stored fields: give coastal_store")
+    if scene.coastal.waves == "open sea":
+        from .coast_in_sea import CoastInSea  # noqa: PLC0415
+
+        return CoastInSea(scene, coastal_store)
     from .coastal_body import CoastalBody  # noqa: PLC0415
 
     return CoastalBody(scene, coastal_store)

@@ -112,3 +112,46 @@ def test_rock_covers_the_requested_fraction(cover):
     mask = arrays.rock_mask(coastal(cells=[200, 150], rock_cover=cover))
     assert mask.min() >= 0 and mask.max() <= 1
     assert mask.mean() == pytest.approx(cover, abs=0.03)
+
+
+def test_initial_velocity_uniform_or_from_a_file_and_none_on_land(tmp_path):
+    """hu = h u on wet cells, exactly 0 where h ≤ h_min (the solver's rule for land)."""
+    c = coastal(initial_u=0.5, initial_v=-0.25)
+    bed = arrays.bathymetry(c)
+    h = arrays.initial_depth(c, bed)
+    hu, hv = arrays.initial_discharges(c, h)
+    wet = h > c.h_min
+    assert wet.any() and (~wet).any()
+    np.testing.assert_array_equal(hu[wet], 0.5 * h[wet])
+    np.testing.assert_array_equal(hv[wet], -0.25 * h[wet])
+    assert np.all(hu[~wet] == 0) and np.all(hv[~wet] == 0)
+    u = np.linspace(-1.0, 1.0, 16 * 12).reshape(12, 16)
+    np.save(tmp_path / "u.npy", u)
+    c = coastal(initial_u=str(tmp_path / "u.npy"))
+    hu, hv = arrays.initial_discharges(c, h)
+    np.testing.assert_array_equal(hu[wet], (u * h)[wet])
+    assert np.all(hv == 0)
+
+
+@pytest.mark.parametrize("value, expected", [
+    (float("nan"), "finite number"), (45.0, "±30 m/s"), ("u.txt", ".npy/.exr file"),
+])
+def test_bad_initial_velocities_are_refused_naming_the_key(value, expected):
+    with pytest.raises(SceneError) as error:
+        scene_from_dict({"name": "c", "coastal": {**SMALL, "initial_v": value}}, "c.toml")
+    message = str(error.value)
+    assert "[coastal] initial_v" in message and expected in message and "\n" not in message
+
+
+def test_initial_velocity_files_are_checked_for_shape_nan_and_speed(tmp_path):
+    cases = {"shape.npy": np.zeros((3, 3)), "nan.npy": np.full((12, 16), np.nan), "fast.npy": np.full((12, 16), 99.0)}
+    words = {"shape.npy": "shape", "nan.npy": "NaN", "fast.npy": "±30 m/s"}
+    for name, array in cases.items():
+        np.save(tmp_path / name, array)
+        scene = tmp_path / "s.toml"
+        scene.write_text('[coastal]\ncells = [16, 12]\nsize = [8.0, 6.0]\norigin = [-4.0, -2.0]\n'
+                         f'initial_u = "{name}"\n')
+        with pytest.raises(SceneError) as error:
+            load_scene(scene)
+        message = str(error.value)
+        assert "[coastal] initial_u" in message and words[name] in message and "\n" not in message, message

@@ -1,0 +1,113 @@
+"""The coast inside the open sea: one body that is the FFT sea far out, the solver's surface inside, no seam."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from oceanrender.coastal.embedding import terrain_height
+from oceanrender.coastal.simulation import run_simulation
+from oceanrender.scene import scene_from_dict
+from oceanrender.surface.coast_in_sea import DRY_DROP, CoastInSea
+from oceanrender.surface.open_sea import WaterBody
+from tests.coastal.test_embedding import BAY
+from tests.tolerances import ROUNDOFF
+
+SCENE = {**BAY, "output": {"frames": [0, 1]}, "water": {"depth": 50.0}, "ocean": {**BAY["ocean"], "choppiness": 0.0},
+         "coastal": {**BAY["coastal"], "spinup": 6.0, "blend_width": 12.0, "rotation": 15.0}}
+
+
+@pytest.fixture(scope="module")
+def body(tmp_path_factory) -> CoastInSea:
+    scene = scene_from_dict(SCENE)
+    store = tmp_path_factory.mktemp("bay")
+    run_simulation(scene, store)
+    return CoastInSea(scene, store)
+
+
+def test_far_from_the_coast_the_body_is_the_open_sea(body):
+    """Where w = 0 and both tapers are 1 the vertices are the FFT sea's, bit for bit: every vertex over water
+    deeper than 20 m outside the domain (the continued beach's shoaling strip is not)."""
+    mine = body.frame(0.0).positions
+    sea = WaterBody(body.scene).frame(0.0).positions
+    g = body.mesh
+    far = np.flatnonzero((g.w == 0) & (g.tau_s == 1) & (g.tau_l == 1))
+    deep = np.flatnonzero((g.w == 0) & (g.terrain < -20.0))
+    assert deep.size > 0 and np.isin(deep, far).all()
+    np.testing.assert_array_equal(mine[far], sea[far])
+
+
+def _across_offshore_side(body, offsets):
+    """World points on a line across the offshore (north) side, at ζ = Ly + offsets [m]."""
+    frame = body.domain
+    xi = np.repeat(np.linspace(10.0, 70.0, 7), len(offsets))
+    zeta = np.tile(frame.size[1] + np.asarray(offsets), 7)
+    return frame.to_world(xi, zeta)
+
+
+def test_no_jump_in_height_or_slope_across_the_join(body):
+    """1 mm either side of the domain's offshore edge: heights within 1 mm × the steepest slope, slopes equal.
+
+    The join is continuous with continuous first derivatives by construction
+    (a C¹ weight, continuous fields); over 2 mm a smooth surface changes its
+    height by at most 2 mm × |∇z| and its slope by 2 mm × its curvature
+    (k² a ≲ 0.1 m⁻¹ for these waves): 2e-4.
+    """
+    x, y = _across_offshore_side(body, [-1e-3, 1e-3])
+    disp, slope, wet = body.surface_at(x, y, 0.0)
+    assert wet.all()
+    inner, outer = disp[0::2], disp[1::2]
+    steepest = np.abs(slope).max()
+    assert np.abs(inner[:, 2] - outer[:, 2]).max() <= 2e-3 * steepest + ROUNDOFF
+    assert np.abs(slope[0::2] - slope[1::2]).max() <= 2e-4
+
+
+def test_the_slopes_are_the_derivatives_of_the_heights(body):
+    """The product-rule slopes against central differences of z, across the blend zone and the shoaling sea.
+
+    Without chop (λ = 0) the slope of z at a rest point is ∇z. The ingredients'
+    own slopes are interpolated slope fields, not derivatives of interpolated
+    heights, so the central differences run over e = 1 m (half a solver cell, a
+    quarter of the sea's 4 m grid) and agree to O((k e)²) ≈ 5 % plus the
+    interpolation's O(k Δ)² differences: 15 % of the largest slope.
+    """
+    frame = body.domain
+    xi, zeta = np.meshgrid(np.linspace(20.0, 60.0, 5), np.linspace(35.0, 75.0, 9))
+    x, y = frame.to_world(xi.ravel(), zeta.ravel())
+    e = 1.0
+    _, slope, wet = body.surface_at(x, y, 0.0)
+    zx = (body.surface_at(x + e, y, 0.0)[0][:, 2] - body.surface_at(x - e, y, 0.0)[0][:, 2]) / (2 * e)
+    zy = (body.surface_at(x, y + e, 0.0)[0][:, 2] - body.surface_at(x, y - e, 0.0)[0][:, 2]) / (2 * e)
+    scale = np.abs(slope[wet]).max()
+    assert np.abs(slope[wet, 0] - zx[wet]).max() <= 0.15 * scale
+    assert np.abs(slope[wet, 1] - zy[wet]).max() <= 0.15 * scale
+
+
+def test_inside_the_domain_the_surface_is_the_solvers_plus_the_short_waves(body):
+    frame = body.domain
+    xi, zeta = np.meshgrid(np.linspace(16.0, 64.0, 5), np.linspace(38.0, 46.0, 3))
+    x, y = frame.to_world(xi.ravel(), zeta.ravel())
+    g = body.geometry(x, y)
+    assert np.all(g.w == 1.0)
+    disp, _, wet = body.surface_at(x, y, 0.0)
+    sea = body.sea_body.sea.sample(x, y, 0.0)
+    long = body.modes.fields(x, y, 0.0)
+    solver = body.solver_fields(0.0, x, y, g.terrain)[0]
+    expected = solver + g.tau_s * (sea.displacement[:, 2] - long[0])
+    np.testing.assert_allclose(disp[wet, 2], expected[wet], rtol=0, atol=ROUNDOFF * 10)
+
+
+def test_land_lies_above_the_water_and_the_terrain_is_on_the_same_triangles(body):
+    disp, _, wet = body.surface(0.0)
+    g = body.mesh
+    assert (~wet).any() and wet.any()
+    np.testing.assert_allclose(disp[~wet, 2], g.terrain[~wet] - DRY_DROP, rtol=0, atol=ROUNDOFF)
+    terrain = body.terrain()
+    top = g.x.size
+    c = body.coastal
+    expected = terrain_height(body.coast.bed, body.domain, c.spacing, c.offshore_side, c.still_level, c.outer_slope,
+                              c.outer_depth, g.x, g.y)
+    np.testing.assert_allclose(terrain.positions[:top, 2], expected, rtol=0, atol=1e-5 * np.abs(expected).max())
+    assert terrain.faces.max() == len(terrain.positions) - 1
+    np.testing.assert_array_equal(terrain.faces, body.faces[: len(terrain.faces)])
+    assert terrain.positions[:, 2].min() > -body.scene.water.depth  # inside the closed body
