@@ -75,6 +75,12 @@ baseline row the report gives the coarsest of our grids (per order) whose L1
 error is ≤ theirs and their wall time ÷ ours. ``--sweep-threads 1`` runs ours on
 one thread, as the baselines are.
 
+``--scheme NAME [NAME ...]`` runs ours at second order with each of those schemes
+(``swe.SCHEMES``: "kinetic", the default, "HLL split", "kinetic split") in the same
+run, each swept and reported on its own rows ("order 2, NAME"); "kinetic split" also
+adds a first-order sweep with the split first-order scheme. Ours run at 0.9 × the
+scheme's positivity bound (:data:`OURS_CFL`).
+
 ``--only REGEX`` runs only the rows whose label (as printed on stderr, e.g.
 "PyClaw square-stoker order 1") matches, to redo a few rows.
 
@@ -139,17 +145,27 @@ def _project_analytic():
 
 
 OURS_CFL = {1: 0.9, 2: 0.45}
-"""Courant number of ours per order: 0.9 × the positivity bound (swe.CFL_BOUND: 1 and ½)."""
+"""Courant number of ours per order: 0.9 × the positivity bound (swe.CFL_BOUND: 1 and ½); "kinetic split"
+runs at 0.9 at both orders (0.9 × swe.SPLIT_CFL_BOUND)."""
+
+OURS_SCHEME: str | None = None
+"""Second-order scheme of ours (a key of swe.SCHEMES; None: SolverParams' default); ``--scheme`` sets it."""
 
 OURS_H_MIN = 1e-5
 """Dry threshold of ours [m]: physically small, so that it does not delay Ritter's front (docs/coastal.md)."""
 
 
 def run_ours(case: DamBreak, nx: int, ny: int, order: int, repeats: int, threads: int | None = None,
-             cfl: float | None = None, h_min: float = OURS_H_MIN) -> RunResult:
-    """Dam break with oceanrender's solver on nx × ny cells; best of ``repeats`` timed runs."""
-    scheme, grid = f"order {order}", f"{nx}×{ny}"
-    cfl = OURS_CFL[order] if cfl is None else cfl
+             cfl: float | None = None, h_min: float = OURS_H_MIN, ours_scheme: str | None = None) -> RunResult:
+    """Dam break with oceanrender's solver on nx × ny cells; best of ``repeats`` timed runs.
+
+    ``ours_scheme``: a key of swe.SCHEMES for this run (None: OURS_SCHEME, the first ``--scheme``).
+    """
+    ours_scheme = OURS_SCHEME if ours_scheme is None else ours_scheme
+    scheme = f"order {order}" if ours_scheme is None else f"order {order}, {ours_scheme}"
+    grid = f"{nx}×{ny}"
+    if cfl is None:
+        cfl = 0.9 if ours_scheme == "kinetic split" else OURS_CFL[order]
     try:
         import numba  # noqa: PLC0415
         from oceanrender.coastal.boundaries import Boundaries, Wall  # noqa: PLC0415
@@ -164,8 +180,9 @@ def run_ours(case: DamBreak, nx: int, ny: int, order: int, repeats: int, threads
         result = RunResult("oceanrender", _version("oceanrender"), case.name, scheme, grid, nx * ny,
                            threads=f"{numba.get_num_threads()} (numba, {_threading_layer()})")
         dx, dy = case.length / nx, case.width / ny
+        extra = {} if ours_scheme is None else {"scheme": ours_scheme}
         params = SolverParams(dx=dx, dy=dy, order=order, cfl=cfl, h_min=h_min, manning=0.0,
-                              boundaries=Boundaries(west=Wall(), east=Wall(), south=Wall(), north=Wall()))
+                              boundaries=Boundaries(west=Wall(), east=Wall(), south=Wall(), north=Wall()), **extra)
         solver = ShallowWaterSolver(np.zeros((ny, nx)), params)
         x = (np.arange(nx) + 0.5) * dx  # cell centres; axis 1 is x
         h0 = np.ascontiguousarray(np.broadcast_to(case.initial_depth(x), (ny, nx)), dtype=float)
@@ -185,7 +202,7 @@ def run_ours(case: DamBreak, nx: int, ny: int, order: int, repeats: int, threads
         h = np.asarray(state.h)
         x_cells = np.broadcast_to(x, h.shape)
         result.l1 = l1_error(case, x_cells, h, dx * dy, _project_analytic())
-        notes = [f"CFL {params.cfl}, h_min {params.h_min} m" + (f", {params.limiter}" if order == 2 else "")]
+        notes = [f"CFL {params.cfl}, h_min {params.h_min} m" + (f", {params.scheme}, {params.limiter}" if order == 2 else "")]
         if not np.all(np.isfinite(h)):
             result.status, notes = "failed", ["NaN in depth", *notes]
         elif h.min() < 0.0:
@@ -313,8 +330,9 @@ SWEEP = (100, 140, 200, 280, 400, 560, 800, 1120, 1600, 2240)
 """Channel resolutions nx of ours in the equal-accuracy sweep (ny = nx / 10: square cells)."""
 
 
-def accuracy_sweep(baselines: list[RunResult], repeats: int, threads: int | None, only=None) -> list[RunResult]:
-    """Ours on the channel cases at the :data:`SWEEP` resolutions, order 1 and 2, coarse to fine.
+def accuracy_sweep(baselines: list[RunResult], repeats: int, threads: int | None, only=None,
+                   schemes=(None,)) -> list[RunResult]:
+    """Ours on the channel cases at the :data:`SWEEP` resolutions, order 1 and 2 (each of ``schemes``), coarse to fine.
 
     A sweep stops at the first resolution whose L1 error is at most the smallest of
     the baselines' on that case, or whose wall time exceeds the slowest baseline's
@@ -326,13 +344,15 @@ def accuracy_sweep(baselines: list[RunResult], repeats: int, threads: int | None
         ok = [r for r in baselines if r.case == name and r.status == "ok" and math.isfinite(r.l1)]
         target = min((r.l1 for r in ok), default=0.0)
         slowest = max((r.wall_s for r in ok), default=math.inf)
-        for order in (1, 2):
-            label = f"ours {name} order {order} sweep"
+        variants = [(1, None)] + [(1, s) for s in schemes if s == "kinetic split"] + [(2, s) for s in schemes]
+        for order, scheme in variants:
+            label = f"ours {name} order {order}" + (f", {scheme}" if scheme else "") + " sweep"
             if only and not re.search(only, label):
                 continue
             for nx in SWEEP:
                 t0 = time.perf_counter()
-                result = run_ours(case, nx, max(2, nx // 10), order, repeats, threads=threads)
+                result = run_ours(case, nx, max(2, nx // 10), order, repeats, threads=threads,
+                                  ours_scheme=scheme or "kinetic")
                 out.append(result)
                 print(f"bench_swe: {label} {result.grid}: {result.status}, wall {_fmt(result.wall_s, '.3f')} s, "
                       f"L1 {_fmt(result.l1, '.2e')} ({time.perf_counter() - t0:.0f} s)", file=sys.stderr, flush=True)
@@ -359,18 +379,18 @@ def accuracy_summary(results: list[RunResult], sweep: list[RunResult]) -> str:
             lines.append(f"| {theirs.case} | {theirs.solver} {theirs.scheme} | {theirs.grid} | – | – | – | – | – | – "
                          f"| n/a ({theirs.status}) |")
             continue
-        for order in (1, 2):
-            ours = sorted((r for r in sweep if r.case == theirs.case and r.scheme == f"order {order}"
+        for variant in dict.fromkeys(r.scheme for r in sweep):  # "order 1, kinetic", "order 2, HLL split", …
+            ours = sorted((r for r in sweep if r.case == theirs.case and r.scheme == variant
                            and r.status == "ok" and r.l1 <= theirs.l1), key=lambda r: _cells(r.grid))
             if not ours:
-                finest = [r for r in sweep if r.case == theirs.case and r.scheme == f"order {order}"]
+                finest = [r for r in sweep if r.case == theirs.case and r.scheme == variant]
                 reached = f"not reached up to {finest[-1].grid}" if finest else "not run"
                 lines.append(f"| {theirs.case} | {theirs.solver} {theirs.scheme} | {theirs.grid} | {theirs.l1:.2e} | "
-                             f"{theirs.wall_s:.3f} | order {order} | {reached} | – | – | – |")
+                             f"{theirs.wall_s:.3f} | {variant} | {reached} | – | – | – |")
                 continue
             r = ours[0]
             lines.append(f"| {theirs.case} | {theirs.solver} {theirs.scheme} | {theirs.grid} | {theirs.l1:.2e} | "
-                         f"{theirs.wall_s:.3f} | order {order} | {r.grid} | {r.l1:.2e} | {r.wall_s:.3f} | "
+                         f"{theirs.wall_s:.3f} | {variant} | {r.grid} | {r.l1:.2e} | {r.wall_s:.3f} | "
                          f"×{theirs.wall_s / r.wall_s:.1f} |")
     return "\n".join(lines)
 
@@ -519,9 +539,14 @@ def main(argv=None) -> int:
     parser.add_argument("--accuracy", action="store_true",
                         help="also sweep ours over channel resolutions (SWEEP) and report the wall time at equal "
                              "or better L1 error than each baseline row")
+    parser.add_argument("--scheme", default=None, nargs="+",
+                        help="second-order scheme(s) of ours (swe.SCHEMES: 'kinetic', 'HLL split', 'kinetic split'), "
+                             "each swept in the same run; default: the solver's")
     parser.add_argument("--sweep-threads", type=int, default=None,
                         help="threads of ours in the sweep (default: numba's; 1 for a per-core comparison)")
     args = parser.parse_args(argv)
+    global OURS_SCHEME
+    OURS_SCHEME = args.scheme[0] if args.scheme else None
     if args.repeats < 1 or args.repeats_ours < 1:
         parser.error("--repeats and --repeats-ours must be at least 1")
     sizes = QUICK if args.quick else FULL
@@ -537,7 +562,8 @@ def main(argv=None) -> int:
         results.append(result)
         print(f"bench_swe: {label}: {result.status}, {_fmt(result.updates_per_s / 1e6, '.2f')} M/s, "
               f"L1 {_fmt(result.l1, '.2e')} ({time.perf_counter() - t0:.0f} s)", file=sys.stderr, flush=True)
-    sweep = accuracy_sweep(results, args.repeats_ours, args.sweep_threads, args.only) if args.accuracy else []
+    sweep = (accuracy_sweep(results, args.repeats_ours, args.sweep_threads, args.only, schemes=args.scheme or (None,))
+             if args.accuracy else [])
     equal = [] if not sweep else [
         f"Time to solution at equal accuracy (channel cases; ours swept over nx = {', '.join(map(str, SWEEP))} "
         f"with ny = nx/10, CFL {OURS_CFL[1]} / {OURS_CFL[2]} at order 1 / 2, h_min {OURS_H_MIN} m, "

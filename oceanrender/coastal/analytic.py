@@ -10,9 +10,13 @@ Flat, frictionless bed, depth h [m] and velocity u [m s⁻¹] along x, gravity g
 * :func:`wall_reflection` — the bore reflected when a uniform stream hits a wall;
 * :func:`simple_wave` — a smooth Gaussian hump running into still water as a simple
   wave, exact until it breaks (:func:`simple_wave_breaking_time`) [2], [4]: the smooth
-  test on which second order shows.
+  test on which second order shows;
+* :func:`thacker_planar` — a planar free surface oscillating in a parabolic bowl,
+  with moving shorelines on both sides (Thacker 1981 [5], as in SWASHES [3],
+  sect. 4.2.2): the smooth wet/dry test.
 
-All functions are pure and vectorised over x; t in s, positions in m.
+All functions are pure and vectorised over x; t in s, positions in m. The bed is
+flat except for :func:`thacker_planar`, which brings its own bed.
 
 References
 ----------
@@ -27,6 +31,8 @@ References
    breaks, in the notation used here).
 .. [4] G. B. Whitham, "Linear and Nonlinear Waves", Wiley, New York, 1974,
    sect. 13.10 (simple waves of the shallow-water equations).
+.. [5] W. C. Thacker, "Some exact solutions to the nonlinear shallow-water wave
+   equations", J. Fluid Mech. 107, 499–508, 1981, doi:10.1017/S0022112081001882.
 """
 
 from __future__ import annotations
@@ -48,6 +54,7 @@ __all__ = [
     "wall_reflection",
     "simple_wave",
     "simple_wave_breaking_time",
+    "thacker_planar",
 ]
 
 G: float = 9.81
@@ -390,3 +397,56 @@ def simple_wave(
         lo = np.where(past, lo, mid)
     c, _ = _hump_celerity(0.5 * (lo + hi), h0, amplitude, width, x_c, g)
     return c * c / g, 2.0 * (c - c0)
+
+
+def thacker_planar(
+    x: ArrayLike, t: float, h0: float, a: float, amplitude: float, x_c: float = 0.0, g: float = G
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Thacker's planar surface oscillating in a parabolic bowl, with two moving shorelines.
+
+    Parameters
+    ----------
+    x : array_like
+        Positions [m].
+    t : float
+        Time [s].
+    h0 : float
+        Depth at the centre of the bowl when the surface is level [m], > 0.
+    a : float
+        Half-width of the wet region [m], > 0: the bed is z_b = h0 ((x − x_c)²/a² − 1).
+    amplitude : float
+        Velocity amplitude B [m s⁻¹], ≥ 0: the water moves as a slab, u = B sin(ωt).
+    x_c : float, optional
+        Centre of the bowl [m].
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    bed, h, u : ndarray
+        Bed elevation [m], depth [m] (0 on dry ground) and velocity [m s⁻¹] (0 on dry ground).
+
+    Notes
+    -----
+    With ξ = x − x_c and ω = √(2 g h0)/a, the surface stays a plane and the velocity
+    uniform [5] (SWASHES [3], sect. 4.2.2, in its notation B, h0, a)::
+
+        h(x, t) = h0 − (h0/a²) (ξ + (B/ω) cos ωt)²   where positive, else 0,
+        u(x, t) = B sin ωt   on the wet part,   η = z_b + h = −(B ω/g) cos(ωt) ξ − (B²/2g) cos² ωt
+
+    (the depth is the bed's parabola turned over, its centre at ξ = −(B/ω) cos ωt;
+    the shorelines ξ± = −(B/ω) cos ωt ± a move with the water, ẋ± = u). Smooth
+    inside the wet region, with a kink of h at each shoreline.
+    """
+    x = np.asarray(x, dtype=np.float64)
+    h0 = _check_positive("h0", h0)
+    a = _check_positive("a", a)
+    if not (math.isfinite(amplitude) and amplitude >= 0):
+        raise ValueError(f"amplitude must be finite and >= 0; got {amplitude}")
+    omega = math.sqrt(2.0 * g * h0) / a
+    xi = x - x_c
+    bed = h0 * (xi * xi / (a * a) - 1.0)
+    centre = -(amplitude / omega) * math.cos(omega * t)
+    h = np.maximum(0.0, h0 - (h0 / (a * a)) * (xi - centre) ** 2)
+    u = np.where(h > 0.0, amplitude * math.sin(omega * t), 0.0)
+    return bed, h, u

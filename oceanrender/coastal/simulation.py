@@ -123,7 +123,7 @@ def solver_for_scene(scene) -> tuple[ShallowWaterSolver, np.ndarray, State]:
     coastal = scene.coastal
     dx, dy = coastal.spacing
     params = SolverParams(dx=dx, dy=dy, order=coastal.order, cfl=coastal.cfl, h_min=coastal.h_min,
-                          limiter=coastal.limiter,
+                          limiter=coastal.limiter, scheme=coastal.scheme,
                           manning=coastal.manning, boundaries=inputs.boundaries(coastal, scene.ocean))
     bed = arrays.bathymetry(coastal)
     h = arrays.initial_depth(coastal, bed)

@@ -593,9 +593,14 @@ class CoastalSettings(_Section):
     offshore_side: Literal["north", "south", "east", "west"] = Field("north", description="side the waves enter")
     lateral: Literal["wall", "transmissive"] = Field("transmissive", description="the two sides beside the offshore one")
     order: Literal[1, 2] = Field(2, description="1: first-order scheme; 2: second order")
+    scheme: Literal["kinetic", "HLL split", "kinetic split"] = Field(
+        "kinetic", description="'kinetic': the unsplit kinetic scheme; 'HLL split' (order 2): HLLE flux in "
+                               "Strang-split sweeps; 'kinetic split': kinetic flux in Strang-split sweeps, "
+                               "MUSCL-Hancock at order 2, cfl up to 1 (docs/coastal.md)")
     limiter: Literal["MC", "van Leer", "minmod"] = Field(
         "MC", description="(order 2) slope limiter; the dissertation's is minmod, MC halves the error here")
-    cfl: float = Field(0.4, gt=0, le=1, description="Courant number [-]; ≤ 1 at first order, ≤ 0.5 at second")
+    cfl: float = Field(0.4, gt=0, le=1, description="Courant number [-]; ≤ 1 at first order, ≤ 0.5 at second "
+                                                     "(≤ 1 with scheme 'kinetic split')")
     h_min: float = Field(0.002, ge=0, le=1, description="dry threshold: cells with depth ≤ h_min are land [m]")
     manning: float = Field(0.02, ge=0, le=1, description="Manning friction coefficient [s m^-1/3]")
     spinup: float = Field(20.0, ge=0, le=1e5, description="simulated time before frame 0 [s]")
@@ -610,8 +615,9 @@ class CoastalSettings(_Section):
     @field_validator("cfl")
     @classmethod
     def _cfl_bound(cls, value: float, info) -> float:
-        if info.data.get("order") == 2 and value > 0.5:
-            raise ValueError(f"must be ≤ 0.5 at order 2 (the scheme's positivity bound), got {value}")
+        if info.data.get("order") == 2 and info.data.get("scheme") != "kinetic split" and value > 0.5:
+            raise ValueError(f"must be ≤ 0.5 at order 2 with scheme {info.data.get('scheme')!r} (the scheme's "
+                             f"positivity bound; 'kinetic split' allows ≤ 1), got {value}")
         return value
 
     @field_validator("initial_u", "initial_v")

@@ -13,6 +13,7 @@ from oceanrender.coastal.analytic import (
     simple_wave,
     simple_wave_breaking_time,
     stoker_middle_state,
+    thacker_planar,
     wall_reflection,
 )
 from tests.tolerances import ROUNDOFF
@@ -130,3 +131,32 @@ def test_simple_wave_keeps_its_riemann_invariant_and_mass():
 def test_refuses_impossible_states(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_thacker_planar_conserves_volume_and_solves_the_equations():
+    """Volume constant, surface planar, and the residuals of (1a)–(1b) vanish on the wet part."""
+    params = dict(h0=0.5, a=1.0, amplitude=0.5, x_c=2.0)
+    omega = math.sqrt(2.0 * G * 0.5)
+    x = np.linspace(0.0, 4.0, 400001)
+    volume = _integral(thacker_planar(x, 0.0, **params)[1], x)
+    assert volume == pytest.approx(4.0 / 3.0 * 0.5 * 1.0, rel=1e-9)  # ∫ h0 (1 − ξ²/a²) dξ = 4 h0 a / 3
+    xs = np.linspace(1.8, 2.2, 41)  # stays wet: |ξ| < a − B/ω ≈ 0.84 m
+    for t in (0.1, 0.7, 1.3):
+        assert _integral(thacker_planar(x, t, **params)[1], x) == pytest.approx(volume, rel=1e-9)
+        bed, h, u = thacker_planar(xs, t, **params)
+        eta = bed + h
+        assert np.ptp(np.diff(eta) / np.diff(xs)) < 1e-9  # a plane
+        dt, dx = 1e-5, 1e-5
+        _, hp, up = thacker_planar(xs, t + dt, **params)
+        _, hm, um = thacker_planar(xs, t - dt, **params)
+        bx_p, hx_p, _ = thacker_planar(xs + dx, t, **params)
+        bx_m, hx_m, _ = thacker_planar(xs - dx, t, **params)
+        mass = (hp - hm) / (2 * dt) + u * (hx_p - hx_m) / (2 * dx)  # u is uniform: ∂x(hu) = u ∂x h
+        momentum = (up - um) / (2 * dt) + G * ((bx_p + hx_p) - (bx_m + hx_m)) / (2 * dx)  # u_t + g η_x
+        assert np.abs(mass).max() < 1e-6 and np.abs(momentum).max() < 1e-5
+    # the shorelines move with the water: x± = x_c − (B/ω) cos ωt ± a
+    _, h, u = thacker_planar(x, 0.4, **params)
+    wet = x[h > 0]
+    centre = 2.0 - (0.5 / omega) * math.cos(omega * 0.4)
+    assert wet.min() == pytest.approx(centre - 1.0, abs=2e-5) and wet.max() == pytest.approx(centre + 1.0, abs=2e-5)
+    assert np.all(u[h == 0] == 0.0) and u[h > 0][0] == pytest.approx(0.5 * math.sin(omega * 0.4), rel=ROUNDOFF)

@@ -249,3 +249,42 @@ def test_foam_defaults_are_the_published_values():
     assert foam.criterion == "crest acceleration" and foam.threshold is None
     assert foam.albedo == 0.55  # fresh foam, Whitlock et al. (1982)
     assert scene_from_dict({"name": "t", "foam": {"criterion": "Jacobian", "threshold": 0.3}}).foam.threshold == 0.3
+
+
+def test_a_view_replaces_the_camera_and_names_its_own_folder():
+    from oceanrender.scene import with_view
+
+    scene = scene_from_dict({"name": "bay", "camera": {"position": [0.0, 0.0, 5.0], "target": [0.0, 9.0, 0.0],
+                                                       "views": {"cliff": {"position": [1.0, 2.0, 30.0],
+                                                                           "target": [5.0, 50.0, 0.0], "fov": 40.0}}}})
+    cliff = with_view(scene, "cliff")
+    assert cliff.name == "bay_cliff"
+    assert (cliff.camera.position, cliff.camera.target, cliff.camera.fov) == ((1.0, 2.0, 30.0), (5.0, 50.0, 0.0), 40.0)
+    assert scene.camera.position == (0.0, 0.0, 5.0)  # the scene itself is unchanged (frozen)
+
+
+@pytest.mark.parametrize("views, key", [
+    ({"bad name": {"position": [0, 0, 5], "target": [0, 9, 0]}}, "views"),
+    ({"low": {"position": [0, 0, -1], "target": [0, 9, 0]}}, "[camera] position"),
+    ({"same": {"position": [0, 0, 5], "target": [0, 0, 5]}}, "views"),
+])
+def test_bad_views_are_refused_naming_the_key(views, key):
+    with pytest.raises(SceneError) as error:
+        scene_from_dict({"name": "bay", "camera": {"views": views}}, "bay.toml")
+    assert key in str(error.value) and "\n" not in str(error.value)
+
+
+@pytest.mark.parametrize("scheme, cfl, accepted", [
+    ("kinetic", 0.5, True), ("kinetic", 0.6, False), ("HLL split", 0.6, False),
+    ("kinetic split", 0.9, True), ("kinetic split", 1.0, True),
+])
+def test_the_second_order_courant_bound_follows_the_scheme(scheme, cfl, accepted):
+    # The unsplit Heun schemes keep h >= 0 only for cfl <= 1/2; the split MUSCL-Hancock
+    # sweeps of "kinetic split" for cfl <= 1 (oceanrender.coastal.swe, CFL_BOUND / SPLIT_CFL_BOUND).
+    data = {"name": "t", "coastal": {"order": 2, "scheme": scheme, "cfl": cfl}}
+    if accepted:
+        assert scene_from_dict(data).coastal.cfl == cfl
+    else:
+        with pytest.raises(SceneError) as error:
+            scene_from_dict(data, "t.toml")
+        assert "cfl" in str(error.value) and "\n" not in str(error.value)
