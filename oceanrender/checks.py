@@ -78,13 +78,15 @@ def available_memory() -> float:
 
 
 def mesh_vertices(scene: Scene) -> int:
-    """Top vertices of the scene's water body [-] (the radial grid of [mesh], or the FFT patch)."""
-    if scene.coastal is not None:
+    """Top vertices of the scene's water body [-] (the radial grid of [mesh], or the FFT patch; the coast's grid,
+    or with ``waves = "open sea"`` the radial grid it sits in, with its terrain on the same vertices)."""
+    if scene.coastal is not None and scene.coastal.waves != "open sea":
         return (scene.coastal.cells[0] + 1) * (scene.coastal.cells[1] + 1)
     if scene.mesh.kind == "radial":
         ratio = 1.0 + 2.0 * math.pi / scene.mesh.segments  # RadialGrid.square_cells
         rings = math.ceil(math.log(scene.mesh.outer_radius / scene.mesh.inner_radius) / math.log(ratio)) + 1
-        return 1 + max(rings, 2) * scene.mesh.segments
+        top = 1 + max(rings, 2) * scene.mesh.segments
+        return 2 * top if scene.coastal is not None else top  # the coast's terrain has the body's top vertices
     return (scene.ocean.resolution + 1) ** 2
 
 
@@ -101,7 +103,7 @@ def memory_estimate(scene: Scene, renders: bool = True) -> list[MemoryItem]:
     if scene.coastal is not None:
         cells = scene.coastal.cells[0] * scene.coastal.cells[1]
         items.append(MemoryItem("[coastal] cells", f"shallow water: {cells} cells", cells * BYTES_PER_COASTAL_CELL))
-    key = "[coastal] cells" if scene.coastal is not None else (
+    key = "[coastal] cells" if scene.coastal is not None and scene.coastal.waves != "open sea" else (
         "[mesh] segments" if scene.mesh.kind == "radial" else "[ocean] resolution")
     vertices = mesh_vertices(scene)
     if renders:
@@ -153,7 +155,7 @@ def lowest_camera_height(scene: Scene) -> float:
 
 def check_sea(scene: Scene, source: str) -> None:
     """The open sea fits its water body: bottom below −8σ, camera above +4σ of the elevation [m]."""
-    if scene.coastal is not None:
+    if scene.coastal is not None and scene.coastal.waves != "open sea":
         return
     from .waves.sea import elevation_std  # noqa: PLC0415
 

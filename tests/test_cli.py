@@ -189,3 +189,10 @@ def test_errors_show_control_characters_escaped(tmp_path, capsys):
     assert main(["render", str(scene), "--out", str(tmp_path / "o")]) == 2
     line = one_error_line(capsys)
     assert "a\\x00b\\nc.csv" in line and line.isprintable()
+
+
+def test_an_unknown_view_is_refused_in_one_line_before_any_work(tmp_path, capsys):
+    assert main(["render", str(tiny_toml(tmp_path)), "--view", "cliff", "--out", str(tmp_path / "out")]) == 2
+    line = one_error_line(capsys)
+    assert "--view cliff" in line and "[camera.views.cliff]" in line
+    assert not (tmp_path / "out").exists()

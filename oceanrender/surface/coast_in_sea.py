@@ -27,7 +27,7 @@ fade where the water gets shallow. Across the join every term is continuous
 with continuous first derivatives, so heights and slopes are continuous; the
 slopes are those of this formula (the product rule on w and τ included). A
 point is wet where z lies more than max(``h_min``, :data:`RENDERED_FILM`) above the terrain; elsewhere
-the surface is put ``dry_drop`` below it, as on the isolated coast
+the surface is put at least ``dry_drop`` below it, as on the isolated coast
 (:mod:`.coastal_mesh`), and the beach hides it. The terrain
 (:func:`~oceanrender.coastal.embedding.terrain_height`: the solver's bed
 continued along the coast, inland and offshore) is a heightfield on the same
@@ -65,6 +65,9 @@ TAPER_ONE = 1e-4
 RENDERED_FILM = 0.01
 
 
+#: Cells the water level is carried into dry land for the surface under it (:func:`extended_level`) [-].
+LEVEL_PASSES = 6
+
 #: Distance over which the rock cover fades out at the grid's edges [m] (no rock pattern outside).
 ROCK_FADE = 10.0
 
@@ -101,6 +104,28 @@ class JoinGeometry:
     w: NDArray
     wx: NDArray
     wy: NDArray
+
+
+def extended_level(level: NDArray, wet: NDArray, passes: int) -> NDArray[np.float64]:
+    """The water level of wet cells carried ``passes`` cells into the dry ones [m].
+
+    Each pass gives every dry cell next to a wet (or already reached) cell the
+    mean level of those 4-neighbours; cells never reached keep ``level``. Under
+    a dry point the water surface then lies at the level of the water beside it,
+    so the surface crosses the rising beach where the water's level meets it,
+    not at the next dry vertex of a coarse triangle.
+    """
+    value = np.where(wet, level, 0.0)
+    known = np.asarray(wet, bool).copy()
+    for _ in range(passes):
+        v = np.pad(np.where(known, value, 0.0), 1)
+        k = np.pad(known.astype(float), 1)
+        total = v[:-2, 1:-1] + v[2:, 1:-1] + v[1:-1, :-2] + v[1:-1, 2:]
+        count = k[:-2, 1:-1] + k[2:, 1:-1] + k[1:-1, :-2] + k[1:-1, 2:]
+        reach = ~known & (count > 0)
+        value = np.where(reach, total / np.maximum(count, 1.0), value)
+        known |= reach
+    return np.where(known, value, level)
 
 
 class CoastInSea:
@@ -192,14 +217,18 @@ class CoastInSea:
         staircase of the cells where it stopped. The slopes are central
         differences of z_b + h where wet and z_b where dry on the cells (as
         :func:`~.coastal_mesh.water_body_vertices` shades), bilinear between
-        cell centres and turned into world axes.
+        cell centres and turned into world axes. A fourth row is the level of
+        the water beside dry cells (:func:`extended_level`), where a dry point's
+        surface is put.
         """
         c = self.coastal
         h, bed = binomial_smooth(self.coast.frame_fields(t)["h"]), self.coast.bed
+        wet = h > max(c.h_min, RENDERED_FILM)
         gy, gx = np.gradient(np.where(h > c.h_min, bed + h, bed), c.spacing[1], c.spacing[0])
-        depth, sx, sy = (grid_sample(f, self.domain, c.spacing, x, y) for f in (h, gx, gy))
+        level = extended_level(bed + h, wet, LEVEL_PASSES)
+        depth, sx, sy, beside = (grid_sample(f, self.domain, c.spacing, x, y) for f in (h, gx, gy, level))
         wx, wy = self.domain.vector_to_world(sx, sy)
-        return np.stack([terrain + depth - c.still_level, wx, wy])
+        return np.stack([terrain + depth - c.still_level, wx, wy, beside - c.still_level])
 
     def surface(self, t: float) -> tuple[NDArray, NDArray, NDArray]:
         """(displacement (V_top, 3) [m], slopes (V_top, 2) [-], wet (V_top,) bool) of the joined surface at t [s]."""
@@ -217,6 +246,7 @@ class CoastInSea:
         n = np.asarray(sea.normals, dtype=np.float64)
         slope = -n[:, :2] / n[:, 2:3]
         near = np.flatnonzero((g.w > 0) | (g.tau_s < 1.0) | (g.tau_l < 1.0))  # elsewhere z = η_F exactly
+        under = disp[:, 2] + c.still_level
         if near.size:
             eta_l, dlx, dly, slx, sly = self.modes.fields(g.x[near], g.y[near], t)
             tau_s, tau_l = g.tau_s[near], g.tau_l[near]
@@ -224,11 +254,13 @@ class CoastInSea:
             short = disp[near, 2] - eta_l
             eta_s = np.zeros(near.size)
             grad_s = np.zeros((2, near.size))
+            beside = np.zeros(near.size)
             solver = w > 0
             if np.any(solver):
-                eta_s[solver], grad_s[0, solver], grad_s[1, solver] = self.solver_fields(
+                eta_s[solver], grad_s[0, solver], grad_s[1, solver], beside[solver] = self.solver_fields(
                     t, g.x[near][solver], g.y[near][solver], g.terrain[near][solver])
             z = tau_s * short + tau_l * (1 - w) * eta_l + w * eta_s
+            under[near] = z + w * (beside - eta_s) + c.still_level  # a dry point's surface: the water beside it
             # ∇z by the product rule; ∇τ = τ'(d) ∇d, ∇d = −∇z_b
             gdx, gdy = -g.terrain_gx[near], -g.terrain_gy[near]
             sx = (tau_s * (slope[near, 0] - slx) + tau_l * (1 - w) * slx + w * grad_s[0]
@@ -245,7 +277,11 @@ class CoastInSea:
         wet = disp[:, 2] - g.terrain > max(c.h_min, RENDERED_FILM)
         dry = ~wet
         disp[dry, 0] = disp[dry, 1] = 0.0
-        disp[dry, 2] = g.terrain[dry] - DRY_DROP
+        # NOTE: a dry point keeps the height of the water beside it when that is below the land (the sea's
+        # own height outside the grid, the solver's level carried into the dry cells inside): the water and
+        # the terrain then cross where that level meets the beach, a straight shoreline, where z_b − DRY_DROP
+        # everywhere made it follow the dry vertices of the coarse far triangles (steps).
+        disp[dry, 2] = np.minimum(under[dry], g.terrain[dry] - DRY_DROP)
         slope[dry, 0], slope[dry, 1] = g.terrain_gx[dry], g.terrain_gy[dry]
         return disp, slope, wet
 

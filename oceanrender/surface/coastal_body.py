@@ -98,8 +98,22 @@ class CoastalBody:
         fields = self.frame_fields(t)
         positions, normals = water_body_vertices(self.bed, fields["h"], self.coastal.spacing, self.coastal.origin,
                                                  self.coastal.h_min)
+        positions, normals = self.rotated(positions, normals)
         foam = self.vertex_foam(t, len(positions))[1] if self.scene.foam.enabled else None
         return FrameGeometry(positions, normals, foam)
+
+    def rotated(self, positions: np.ndarray, normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Positions and normals turned by ``[coastal] rotation`` about ``origin`` (world = origin + R (p − origin))."""
+        if self.coastal.rotation == 0.0:
+            return positions, normals
+        angle = np.radians(self.coastal.rotation)
+        turn = np.array([[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]])
+        origin = np.asarray(self.coastal.origin, dtype=np.float64)
+        positions = positions.astype(np.float64)
+        normals = normals.astype(np.float64)
+        positions[:, :2] = (positions[:, :2] - origin) @ turn.T + origin
+        normals[:, :2] = normals[:, :2] @ turn.T
+        return positions.astype(np.float32), normals.astype(np.float32)
 
     def total_slope_variance(self, roughness: float) -> float:
         """Mean-square slope [-]: the unresolved roughness² plus the simulated surface's over wet cells.
@@ -119,5 +133,6 @@ class CoastalBody:
     def terrain(self) -> Terrain:
         """The terrain: a heightfield of the bed with sand and rock cover (:class:`~.frame.Terrain`)."""
         positions, faces, normals = terrain_mesh(self.bed, self.coastal.spacing, self.coastal.origin)
+        positions, normals = self.rotated(positions, normals)
         rock = arrays.rock_mask(self.coastal).ravel().astype(np.float32)
         return Terrain(positions, faces, normals, rock, self.coastal.sand_albedo, self.coastal.rock_albedo)

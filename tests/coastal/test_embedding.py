@@ -171,7 +171,7 @@ def test_the_sea_must_share_the_offshore_depth(tmp_path):
         return repr(v) if not isinstance(v, str) else f'"{v}"'
 
     sections = {**BAY, "ocean": {**OCEAN, "wave_depth": 7.0}}
-    text = f'name = "bay"\n' + "".join(
+    text = 'name = "bay"\n' + "".join(
         f"[{name}]\n" + "".join(f"{k} = {value(v)}\n" for k, v in table.items())
         for name, table in sections.items() if isinstance(table, dict))
     path = tmp_path / "bay.toml"

@@ -50,3 +50,20 @@ def test_white_water_is_where_bores_dissipate(store):
 
 def test_no_foam_when_disabled(store):
     assert CoastalBody(beach(False), store).frame(0.2).foam is None
+
+
+def test_a_rotated_domain_turns_its_body_and_terrain_about_the_origin(store):
+    """rotation = 90°: a point one cell east of the origin along the grid's x axis lies north of it."""
+    straight = CoastalBody(beach(False), store)
+    turned_scene = scene_from_dict({"name": "breaking", "output": {"frames": [0, 4], "fps": 10.0},
+                                    "coastal": {**BREAKING_BEACH, "rotation": 90.0}})
+    turned = CoastalBody(turned_scene, store)
+    a, b = straight.frame(0.3), turned.frame(0.3)
+    origin = np.array(BREAKING_BEACH["origin"])
+    offset = a.positions[:, :2] - origin
+    np.testing.assert_allclose(b.positions[:, :2] - origin, np.column_stack([-offset[:, 1], offset[:, 0]]),
+                               atol=1e-4 * np.abs(offset).max())  # float32 positions
+    np.testing.assert_allclose(b.positions[:, 2], a.positions[:, 2])
+    np.testing.assert_allclose(b.normals[:, :2], np.column_stack([-a.normals[:, 1], a.normals[:, 0]]), atol=1e-6)
+    ta, tb = straight.terrain(), turned.terrain()
+    np.testing.assert_allclose(tb.positions[:, 2], ta.positions[:, 2])
