@@ -111,3 +111,43 @@ def test_land_lies_above_the_water_and_the_terrain_is_on_the_same_triangles(body
     assert terrain.faces.max() == len(terrain.positions) - 1
     np.testing.assert_array_equal(terrain.faces, body.faces[: len(terrain.faces)])
     assert terrain.positions[:, 2].min() > -body.scene.water.depth  # inside the closed body
+
+
+def test_where_only_one_side_is_wet_in_the_blend_the_depths_are_blended(body):
+    """Beside the shoreline in the lateral blend, the solver's swash keeps (1 − w)·0 + w·its depth of water.
+
+    z = z_b + (1 − w) max(z_sea − z_b, 0) + w max(z_solver − z_b, 0) there (the height blend
+    would sink a thin film under the beach once w < 1); its slopes are the derivatives of z
+    (central differences over 0.1 m). Tolerance 20 % of the largest slope: the solver's slope
+    field is interpolated apart from its depth, which differs from differences of z by up to
+    22 % of the scale where only the solver is wet (w = 1, measured; 15 % at these points);
+    taking the dry side's gradient instead of the wet side's would be off by the whole
+    bed slope, ~100 % of the scale here.
+    """
+    frame, c = body.domain, body.coastal
+    lx, ly = frame.size
+    xi, zeta = np.meshgrid(np.linspace(0.05, lx - 0.05, 200), np.linspace(0.05, ly - 0.05, 200))
+    x, y = frame.to_world(xi.ravel(), zeta.ravel())
+    g = body.geometry(x, y)
+    long = body.modes.fields(x, y, 0.0)[0]
+    short = body.sea_body.sea.sample(x, y, 0.0).displacement[:, 2] - long
+    bed = g.terrain - c.still_level
+    a = g.tau_s * short + g.tau_l * long - bed
+    b = g.tau_s * short + body.solver_fields(0.0, x, y, g.terrain)[0] - bed
+    mixed = (g.w > 0) & (g.w < 1) & ((a > 0) != (b > 0))
+    assert mixed.sum() >= 50  # the fixture's swash reaches into the lateral blends
+    disp, slope, wet = body.surface_at(x[mixed], y[mixed], 0.0)
+    depth = (1 - g.w[mixed]) * np.maximum(a[mixed], 0) + g.w[mixed] * np.maximum(b[mixed], 0)
+    kept = wet
+    assert kept.sum() >= 20
+    assert np.abs(disp[kept, 2] - c.still_level - bed[mixed][kept] - depth[kept]).max() <= ROUNDOFF * 10.0
+    e = 0.1
+    xm, ym = x[mixed][kept], y[mixed][kept]
+    zx = (body.surface_at(xm + e, ym, 0.0)[0][:, 2] - body.surface_at(xm - e, ym, 0.0)[0][:, 2]) / (2 * e)
+    zy = (body.surface_at(xm, ym + e, 0.0)[0][:, 2] - body.surface_at(xm, ym - e, 0.0)[0][:, 2]) / (2 * e)
+    # only where the four neighbours are wet too (a dry neighbour sits at the terrain − DRY_DROP)
+    both = np.all([body.surface_at(xm + dx, ym + dy, 0.0)[2] for dx, dy in ((e, 0), (-e, 0), (0, e), (0, -e))], axis=0)
+    assert both.sum() >= 10
+    scale = np.abs(slope[kept][both]).max()
+    assert np.abs(slope[kept][both, 0] - zx[both]).max() <= 0.2 * scale
+    assert np.abs(slope[kept][both, 1] - zy[both]).max() <= 0.2 * scale
