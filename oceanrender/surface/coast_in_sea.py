@@ -25,8 +25,11 @@ Far from the coast w = 0 and τ = 1, so z = η_F and the body *is* the open sea;
 inside the domain w = 1: the solver's surface plus the short waves, which
 fade where the water gets shallow. Across the join every term is continuous
 with continuous first derivatives, so heights and slopes are continuous; the
-slopes are those of this formula (the product rule on w and τ included). A
-point is wet where z lies more than max(``h_min``, :data:`RENDERED_FILM`) above the terrain; elsewhere
+slopes are those of this formula (the product rule on w and τ included).
+Where, inside the blend, only one of the two surfaces (sea, solver) is above
+the terrain, their depths are blended instead (:func:`_depth_blend`; the same
+z where both are wet), so the solver's swash fades with w on a beach the sea
+leaves dry. A point is wet where z lies more than max(``h_min``, :data:`RENDERED_FILM`) above the terrain; elsewhere
 the surface is put at least ``dry_drop`` below it, as on the isolated coast
 (:mod:`.coastal_mesh`), and the beach hides it. The terrain
 (:func:`~oceanrender.coastal.embedding.terrain_height`: the solver's bed
@@ -126,6 +129,32 @@ def extended_level(level: NDArray, wet: NDArray, passes: int) -> NDArray[np.floa
         value = np.where(reach, total / np.maximum(count, 1.0), value)
         known |= reach
     return np.where(known, value, level)
+
+
+def _depth_blend(w, wx, wy, bed, bed_g, sea_z, sea_g, solver_z, solver_g):
+    """Where exactly one of the two surfaces is above the terrain inside the blend (0 < w < 1): depths blended.
+
+    All heights [m] above the still level, gradients [-] as (x, y) pairs, at the same points:
+    w, ∇w [m⁻¹] the solver's weight, bed z_b, and the two surfaces z_sea = τ_s η_short + τ_L η_L
+    and z_solver = τ_s η_short + η_S. With a = max(z_sea − z_b, 0), b = max(z_solver − z_b, 0),
+    z = z_b + (1 − w) a + w b and ∇z = ∇z_b + (1 − w) ∇a + w ∇b + (b − a) ∇w. Where both are
+    wet this is the height blend (1 − w) z_sea + w z_solver exactly, so it is only applied where
+    one is dry; there it keeps the other's water on the land instead of pulling it under by
+    (1 − w) z_b: a thin swash film then fades with w across the lateral blend rather than
+    vanishing where w drops below ~0.9 (a 13 m step of the shoreline within 8 m along the
+    grid's end, seen from the cliff). Returns (indices, z, ∂z/∂x, ∂z/∂y) of those points, or None.
+    """
+    a, b = sea_z - bed, solver_z - bed
+    sel = np.flatnonzero((w > 0) & (w < 1) & ((a > 0) != (b > 0)))
+    if not sel.size:
+        return None
+    w, a, b = w[sel], np.maximum(a[sel], 0.0), np.maximum(b[sel], 0.0)
+    wet_a, wet_b = (a > 0).astype(float), (b > 0).astype(float)
+    out = [bed[sel] + (1 - w) * a + w * b]
+    for bg, sg, rg, wg in zip(bed_g, sea_g, solver_g, (wx, wy)):
+        bg = bg[sel]
+        out.append(bg + (1 - w) * wet_a * (sg[sel] - bg) + w * wet_b * (rg[sel] - bg) + (b - a) * wg[sel])
+    return sel, *out
 
 
 class CoastInSea:
@@ -239,45 +268,6 @@ class CoastInSea:
         geometry = self.geometry(x, y)
         return self.join(geometry, self.sea_body.sea.sample(geometry.x, geometry.y, t, spacing), t)
 
-    def _depth_blend(self, g, near, slope, z, sx, sy, eta_l, slx, sly, eta_s, grad_s, short):
-        """Where exactly one of the two surfaces is above the terrain inside the blend (0 < w < 1): depths blended.
-
-        With a = max(z_sea − z_b, 0), b = max(z_solver − z_b, 0) (z_sea = τ_s η_short + τ_L η_L,
-        z_solver = τ_s η_short + η_S, heights above the still level), z = z_b + (1 − w) a + w b and
-        ∇z = ∇z_b + (1 − w) ∇a + w ∇b + (b − a) ∇w. Where both are wet this is the height blend
-        z = (1 − w) z_sea + w z_solver exactly (so it is only applied where one is dry); where one
-        is dry it keeps the other's water on the land instead of pulling it under by (1 − w) z_b:
-        a thin swash film then fades with w across the lateral blend rather than vanishing where
-        w drops below ~0.9 (a 10 m notch in the shoreline at the grid's end, seen from the cliff).
-        Returns (positions in ``near``, z, ∂z/∂x, ∂z/∂y) of those points, or None.
-        """
-        c = self.coastal
-        w = g.w[near]
-        tau_s, tau_l = g.tau_s[near], g.tau_l[near]
-        bed = g.terrain[near] - c.still_level
-        z_sea = tau_s * short + tau_l * eta_l
-        z_solver = tau_s * short + eta_s
-        a, b = z_sea - bed, z_solver - bed
-        sel = np.flatnonzero((w > 0) & (w < 1) & ((a > 0) != (b > 0)))
-        if not sel.size:
-            return None
-        k = near[sel]
-        w, wx, wy = w[sel], g.wx[k], g.wy[k]
-        a, b = np.maximum(a[sel], 0.0), np.maximum(b[sel], 0.0)
-        bx, by = g.terrain_gx[k], g.terrain_gy[k]
-        gdx, gdy = -bx, -by  # ∇d = −∇z_b
-        # ∇ of the short-wave part, then of each surface (the product rule, as in join)
-        shx = tau_s[sel] * (slope[k, 0] - slx[sel]) + short[sel] * g.dtau_s[k] * gdx
-        shy = tau_s[sel] * (slope[k, 1] - sly[sel]) + short[sel] * g.dtau_s[k] * gdy
-        sea_x = shx + tau_l[sel] * slx[sel] + eta_l[sel] * g.dtau_l[k] * gdx
-        sea_y = shy + tau_l[sel] * sly[sel] + eta_l[sel] * g.dtau_l[k] * gdy
-        sol_x, sol_y = shx + grad_s[0, sel], shy + grad_s[1, sel]
-        wa, wb = (a > 0).astype(float), (b > 0).astype(float)
-        zm = bed[sel] + (1 - w) * a + w * b
-        sxm = bx + (1 - w) * wa * (sea_x - bx) + w * wb * (sol_x - bx) + (b - a) * wx
-        sym = by + (1 - w) * wa * (sea_y - by) + w * wb * (sol_y - by) + (b - a) * wy
-        return sel, zm, sxm, sym
-
     def join(self, g: "JoinGeometry", sea, t: float) -> tuple[NDArray, NDArray, NDArray]:
         """The module docstring's z and D, and ∇z, at the points of ``g`` from the sea sampled there at t [s]."""
         c = self.coastal
@@ -298,17 +288,20 @@ class CoastInSea:
             if np.any(solver):
                 eta_s[solver], grad_s[0, solver], grad_s[1, solver], beside[solver] = self.solver_fields(
                     t, g.x[near][solver], g.y[near][solver], g.terrain[near][solver])
-            z = tau_s * short + tau_l * (1 - w) * eta_l + w * eta_s
-            under[near] = z + w * (beside - eta_s) + c.still_level  # a dry point's surface: the water beside it
-            # ∇z by the product rule; ∇τ = τ'(d) ∇d, ∇d = −∇z_b
+            # the two surfaces and their gradients by the product rule; ∇τ = τ'(d) ∇d, ∇d = −∇z_b
             gdx, gdy = -g.terrain_gx[near], -g.terrain_gy[near]
-            sx = (tau_s * (slope[near, 0] - slx) + tau_l * (1 - w) * slx + w * grad_s[0]
-                  + (eta_s - tau_l * eta_l) * wx + short * g.dtau_s[near] * gdx
-                  + (1 - w) * eta_l * g.dtau_l[near] * gdx)
-            sy = (tau_s * (slope[near, 1] - sly) + tau_l * (1 - w) * sly + w * grad_s[1]
-                  + (eta_s - tau_l * eta_l) * wy + short * g.dtau_s[near] * gdy
-                  + (1 - w) * eta_l * g.dtau_l[near] * gdy)
-            mixed = self._depth_blend(g, near, slope, z, sx, sy, eta_l, slx, sly, eta_s, grad_s, short)
+            shx = tau_s * (slope[near, 0] - slx) + short * g.dtau_s[near] * gdx
+            shy = tau_s * (slope[near, 1] - sly) + short * g.dtau_s[near] * gdy
+            sea_z = tau_s * short + tau_l * eta_l
+            sea_g = (shx + tau_l * slx + eta_l * g.dtau_l[near] * gdx, shy + tau_l * sly + eta_l * g.dtau_l[near] * gdy)
+            solver_z = tau_s * short + eta_s
+            solver_g = (shx + grad_s[0], shy + grad_s[1])
+            z = (1 - w) * sea_z + w * solver_z
+            sx = (1 - w) * sea_g[0] + w * solver_g[0] + (solver_z - sea_z) * wx
+            sy = (1 - w) * sea_g[1] + w * solver_g[1] + (solver_z - sea_z) * wy
+            under[near] = z + w * (beside - eta_s) + c.still_level  # a dry point's surface: the water beside it
+            mixed = _depth_blend(w, wx, wy, g.terrain[near] - c.still_level, (g.terrain_gx[near], g.terrain_gy[near]),
+                                 sea_z, sea_g, solver_z, solver_g)
             disp[near, 0] = tau_s * (disp[near, 0] - dlx) + tau_l * (1 - w) * dlx
             disp[near, 1] = tau_s * (disp[near, 1] - dly) + tau_l * (1 - w) * dly
             disp[near, 2] = z
