@@ -102,7 +102,8 @@ docs/coastal.md, section "Solver"):
       δh = −Δt/(2Δ) (u_n Δh + h Δu_n),  δu_n = −Δt/(2Δ) (u_n Δu_n + g Δη),
       δu_t = −Δt/(2Δ) u_n Δu_t,  W^± = W_i ± ΔW/2 + δW,  η^± = η_i ± Δη/2 + δh,           (10)
 
-  (Δ· the limited undivided slopes), and the centred bed source of (5) at the half step,
+  (Δ· the limited undivided slopes; δ· = 0 in a cell beside a dry one whose bed stands
+  above its water level, where the slopes are not samples of a smooth flow), and the centred bed source of (5) at the half step,
   −Δt/Δ g h_i^{n+½} Δη with h_i^{n+½} = h_i + δh (11), which makes (10)–(11) vanish bit for
   bit at rest (u = 0, Δη = 0). Positivity: with a flux-vector splitting a cell's loss is
   its own outflow F⁺_h(W*⁺) − F⁻_h(W*⁻), a function of its own face states only, and
@@ -1434,6 +1435,13 @@ def _hancock_faces(mB, nB, tB, eB, m, un, ut, e, mA, nA, tA, eA, n, fv, lam, g, 
         dh = -half * (uk * sm + hk * sn)
         dn = -half * (uk * sn + g * se)
         dt_ = -half * uk * st
+        # Beside a dry cell (m = 0) whose bed stands above this cell's water level (a shoreline on a
+        # slope) the slopes are not samples of a smooth flow (that η is the bed, its velocity 0): the
+        # predictor is dropped there (the cell stays MUSCL in space). A dry bed below the level (a
+        # front flooding it, Ritter's) keeps it. Measured on Thacker's bowl, L1 of h: order 1.64 →
+        # 1.84 at nx = 1600 → 3200 (docs/coastal.md).
+        if (mB[k] <= 0.0 and eB[k] >= e[k]) or (mA[k] <= 0.0 and eA[k] >= e[k]):
+            dh = dn = dt_ = 0.0
         hm = hk - 0.5 * sm + dh
         hp = hk + 0.5 * sm + dh
         nm = uk - 0.5 * sn + dn

@@ -242,20 +242,35 @@ def test_thacker_oscillation_with_moving_shorelines(scheme):
 
     Measured after one period, L1 of h over the whole bowl (and over the part that stays
     wet), nx = 200 → 400 → 800 → 1600: HLL split 9.89e-4, 3.72e-4, 1.09e-4, 3.13e-5:
-    orders 1.41, 1.78, 1.80 (wet part 1.20, 1.73, 1.66); kinetic 1.46, 1.75 at 200 → 400 → 800.
+    orders 1.41, 1.78, 1.80, 1.82 at 3200 (wet part 1.20, 1.73, 1.66, 1.75); kinetic 1.46, 1.75, 1.76;
+    kinetic split 1.29, 1.67, 1.84, 1.82 (test below).
     The 400 → 800 pair is tested; 1.6 leaves room for the platform's round-off and
     for the pre-asymptotic range below it (1.33–1.46 at 100 → 400).
     """
     cfl = scheme_cfl(2, scheme)
     e400, _, _, _ = l1_thacker(2, 400, scheme=scheme, cfl=cfl)
     e800, _, solver, state = l1_thacker(2, 800, scheme=scheme, cfl=cfl)
-    # "kinetic split" (ν = 0.9): 2.75e-4 → 9.44e-5, order 1.54 (1.76 at 200 → 400); see docs/coastal.md
-    assert math.log2(e400 / e800) >= (1.45 if scheme == "kinetic split" else 1.6)
+    # "kinetic split" (ν = 0.9): 3.63e-4 → 1.14e-4, order 1.67; see docs/coastal.md
+    assert math.log2(e400 / e800) >= 1.6
     assert state.h.min() >= 0.0 and solver.clamped_volume == 0.0
     dry = state.h <= H_MIN_VALIDATION
     assert dry.any() and np.all(state.hu[dry] == 0.0) and np.all(state.hv[dry] == 0.0)
     e1, _, _, _ = l1_thacker(1, 400, cfl=0.9)
     assert e400 < 0.25 * e1  # first order: 3.8e-3 at nx = 400
+
+
+def test_kinetic_split_reaches_second_order_on_the_moving_shorelines():
+    """The issue's goal, observed order ≥ 1.8 on a smooth wet/dry flow, on the fine pair nx = 1600 → 3200.
+
+    Measured (ν = 0.9, MC, L1 of h over the whole bowl after one period): 3.18e-5 → 8.99e-6,
+    order 1.82 (1.84 at 800 → 1600; 1.64 at 1600 → 3200 before the Hancock predictor was
+    dropped beside dry cells whose bed stands above the water). No margin is given: 1.8 is
+    the goal itself, and the run is deterministic up to round-off (~1e-16 of errors ~1e-5).
+    """
+    e1600, _, _, _ = l1_thacker(2, 1600, scheme="kinetic split", cfl=0.9)
+    e3200, _, solver, state = l1_thacker(2, 3200, scheme="kinetic split", cfl=0.9)
+    assert math.log2(e1600 / e3200) >= 1.8
+    assert state.h.min() >= 0.0 and solver.clamped_volume == 0.0
 
 
 @pytest.mark.parametrize("order", [1, 2])
