@@ -662,6 +662,22 @@ def _cbrt(h):
 
 
 @njit(**_INLINE)
+def _culprits(th, tq, tr, nx):
+    """(non-finite cells, clamped negative depth [m]) of an updated row; negative depths are set to 0."""
+    bad = 0.0
+    neg = 0.0
+    for i in range(nx):
+        hn = th[i]
+        check = hn + tq[i] + tr[i]
+        if check - check != 0.0:
+            bad += 1.0
+        elif hn < 0.0:  # NOTE: not reached within the CFL bound; a last guard, counted
+            neg -= hn
+            th[i] = 0.0
+    return bad, neg
+
+
+@njit(**_INLINE)
 def _manning_row(th, tq, tr, nx, dtcf, h_dry):
     """Semi-implicit Manning friction [6] on a row, in place, wet cells only (branch-free, vectorised).
 
@@ -693,14 +709,7 @@ def _finish_row(tb, bh, bq, br, oh, oq, orr, alpha, nx, dt, cf, h_dry, g15, rdx,
     neg = 0.0
     total, negative = _row_sums(th, tq, tr, nx)
     if not (math.isfinite(total) and negative == 0.0):  # rare: find and count the culprits
-        for i in range(nx):
-            hn = th[i]
-            check = hn + tq[i] + tr[i]
-            if check - check != 0.0:
-                bad += 1.0
-            elif hn < 0.0:  # NOTE: not reached within the CFL bound; a last guard, counted
-                neg -= hn
-                th[i] = 0.0
+        bad, neg = _culprits(th, tq, tr, nx)
         if bad:
             return 0.0, bad, neg
     if cf > 0.0:  # semi-implicit Manning [6], vectorised (no libm call: _cbrt)
@@ -1222,14 +1231,7 @@ def _finish_row_split(tb, bh, bq, br, oh, oq, orr, alpha, nx, dt, cf, h_dry, g, 
     neg = 0.0
     total, negative = _row_sums(th, tq, tr, nx)
     if not (math.isfinite(total) and negative == 0.0):  # rare: find and count the culprits
-        for i in range(nx):
-            hn = th[i]
-            check = hn + tq[i] + tr[i]
-            if check - check != 0.0:
-                bad += 1.0
-            elif hn < 0.0:  # NOTE: not reached within the CFL bound; a last guard, counted
-                neg -= hn
-                th[i] = 0.0
+        bad, neg = _culprits(th, tq, tr, nx)
         if bad:
             return 0.0, bad, neg
     if cf > 0.0:  # semi-implicit Manning [6], vectorised (no libm call: _cbrt)
@@ -1499,14 +1501,7 @@ def _finish_sweep(tb, sy, oh, oq, orr, nx, dtcf, h_dry, g15, rdx, rdy):
     neg = 0.0
     total, negative = _row_sums(th, tq, tr, nx)
     if not (math.isfinite(total) and negative == 0.0):  # rare: find and count the culprits
-        for i in range(nx):
-            hn = th[i]
-            check = hn + tq[i] + tr[i]
-            if check - check != 0.0:
-                bad += 1.0
-            elif hn < 0.0:  # NOTE: not reached within the CFL bound; a last guard, counted
-                neg -= hn
-                th[i] = 0.0
+        bad, neg = _culprits(th, tq, tr, nx)
         if bad:
             return 0.0, 0.0, bad, neg
     if dtcf > 0.0:  # semi-implicit Manning [6]
