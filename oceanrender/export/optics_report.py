@@ -52,6 +52,30 @@ def write_optics_report(out_dir: str | Path, optics: SceneOptics, metadata: dict
     return written
 
 
+LIGHTFIELD_DECADES = 6
+"""Decades of irradiance below the largest surface value that the light-field plot shows [-]."""
+
+
+def lightfield_limits(z, E_d, E_u, decades: int = LIGHTFIELD_DECADES) -> tuple[float, float, float]:
+    """(deepest z [m], smallest and largest irradiance [W m⁻² nm⁻¹]) of a readable light-field plot.
+
+    The irradiance axis spans ``decades`` below the largest value of E_d and E_u (so
+    turbid water, whose E_d falls by 1e-67 over the water column, is not squashed into
+    one corner); the depth axis ends where every plotted E_d has fallen below that floor
+    (or at the bottom of z). E_d, E_u: (n_λ, n_z) on the depths z [m], positive down.
+    """
+    z = np.asarray(z, dtype=float)
+    E_d = np.atleast_2d(np.asarray(E_d, dtype=float))
+    E_u = np.atleast_2d(np.asarray(E_u, dtype=float))
+    finite = np.concatenate([E_d[np.isfinite(E_d)], E_u[np.isfinite(E_u)]])
+    top = float(finite.max()) if finite.size and finite.max() > 0 else 1.0
+    floor = top * 10.0 ** (-decades)
+    above = np.any(np.nan_to_num(E_d, nan=0.0) >= floor, axis=0)
+    deepest = float(z[np.nonzero(above)[0].max()]) if above.any() else float(z[-1])
+    z_max = min(float(z[-1]), deepest * 1.05) if deepest > 0 else float(z[-1])
+    return z_max, floor, 2.0 * top
+
+
 def _plots(out_dir: Path, optics: SceneOptics) -> list[Path]:
     import matplotlib  # noqa: PLC0415
 
@@ -74,12 +98,15 @@ def _plots(out_dir: Path, optics: SceneOptics) -> list[Path]:
 
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
     z = np.asarray(optics.light.z)
-    for wavelength in (450.0, 550.0, 650.0):
-        i = int(np.argmin(np.abs(optics.wavelengths - wavelength)))
+    rows = [int(np.argmin(np.abs(optics.wavelengths - wavelength))) for wavelength in (450.0, 550.0, 650.0)]
+    for i in rows:
         left.semilogx(optics.light.E_d[i], z, label=f"E_d {optics.wavelengths[i]:.0f} nm")
         left.semilogx(optics.light.E_u[i], z, "--", label=f"E_u {optics.wavelengths[i]:.0f} nm")
-    left.invert_yaxis()
-    left.set(xlabel="irradiance [W m⁻² nm⁻¹]", ylabel="depth z [m]", title="Four-flux irradiance profiles")
+    z_max, x_lo, x_hi = lightfield_limits(z, optics.light.E_d[rows], optics.light.E_u[rows])
+    left.set_xlim(x_lo, x_hi)
+    left.set_ylim(z_max, 0.0)  # depth down
+    left.set(xlabel="irradiance [W m⁻² nm⁻¹]", ylabel="depth z [m]",
+             title=f"Four-flux irradiance profiles (to {LIGHTFIELD_DECADES} decades below the surface)")
     left.legend(fontsize=7)
     right.plot(optics.wavelengths, optics.light.R, label="R(0⁻) = E_u/E_d")
     right.set(xlabel="wavelength [nm]", ylabel="irradiance reflectance [-]", title="Reflectance below the surface")
