@@ -197,7 +197,7 @@ def test_composition_builds_the_medium():
     optics = water_optics(coastal)
     assert isinstance(optics, MediumOptics) and 0.5 < optics.particle_fraction <= 1 and 0.8 < optics.particle_g < 1
     medium = water_medium(optics)
-    assert medium["phase"]["type"] == "blendphase"
+    assert medium["phase"]["type"] == "oceanrender_water_phase"  # blend weight and g per wavelength
     # more stuff in the water: more attenuation than pure sea water at every wavelength
     pure_c = water_optics(pure).attenuation
     wl = optics.iops.wavelengths

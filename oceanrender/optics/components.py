@@ -587,9 +587,12 @@ def composition_optics(composition, wavelengths: np.ndarray | None = None) -> Me
     """IOPs and phase model of a :class:`WaterComposition`.
 
     The phase function is a blend of the water's Rayleigh shape and one
-    Henyey–Greenstein lobe for all particles, weighted by b_p/b at 550 nm, with
-    g fitted to the particles' b_bp/b_p (Mitsuba's phase functions take one g
-    and one weight for all wavelengths, so they are set at 550 nm).
+    Henyey–Greenstein lobe for all particles, weighted by b_p(λ)/b(λ), with g(λ)
+    fitted to the particles' b_bp(λ)/b_p(λ) at every wavelength (the
+    ``*_spectrum`` fields, rendered by :mod:`oceanrender.render.phase`), so that the
+    medium's b_b/b equals the composition's at every wavelength (issue 19). The
+    scalar ``particle_fraction`` and ``particle_g`` are the 550 nm values (for the
+    four-flux model and the LUTs).
     """
     wavelengths = np.arange(360.0, 831.0, 5.0) if wavelengths is None else np.asarray(wavelengths, float)
     result = composition_iops(composition, wavelengths)
@@ -599,6 +602,23 @@ def composition_optics(composition, wavelengths: np.ndarray | None = None) -> Me
     bb_particles = np.interp(550.0, wavelengths, result.backscattering - water.backscattering)
     fraction = float(np.clip(b_particles / b_total, 0.0, 1.0)) if b_total > 0 else 0.0
     g = float(henyey_greenstein_g_from_bb_ratio(bb_particles / b_particles)) if b_particles > 0 else 0.0
+    fraction_spectrum, g_spectrum = _particle_phase_spectra(result.scattering, water.scattering,
+                                                            result.backscattering - water.backscattering)
     iops = WaterIOPs(wavelengths=wavelengths, absorption=result.absorption, scattering=result.scattering,
                      source="composition: " + "; ".join(result.notes) if getattr(result, "notes", None) else "composition")
-    return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g)
+    return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g,
+                        particle_fraction_spectrum=fraction_spectrum, particle_g_spectrum=g_spectrum)
+
+
+def _particle_phase_spectra(b, b_water, bb_particles):
+    """(b_p/b, HG g of b_bp/b_p) per wavelength [-]; g = 0 where there are no particles.
+
+    b, b_water [m⁻¹]: total and water scattering; bb_particles [m⁻¹]: the particles'
+    backscattering. b_bp/b_p is clipped into HG's range (0, 0.5].
+    """
+    b_p = np.maximum(b - b_water, 0.0)
+    fraction = np.clip(np.divide(b_p, b, out=np.zeros_like(b), where=b > 0), 0.0, 1.0)
+    has = b_p > 0
+    ratio = np.clip(np.divide(bb_particles, b_p, out=np.full_like(b, 0.5), where=has), 1e-9, 0.5)
+    g = np.where(has, henyey_greenstein_g_from_bb_ratio(ratio), 0.0)
+    return fraction, g

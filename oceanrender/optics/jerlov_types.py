@@ -88,7 +88,11 @@ def iops_WilliamsonHollins2022(water_type: str, wavelengths_nm) -> tuple[np.ndar
 
 
 def jerlov_type_optics(water_type: str, wavelengths: np.ndarray | None = None) -> MediumOptics:
-    """The renderer's medium for a Jerlov water type: IOPs and the Rayleigh + HG phase blend."""
+    """The renderer's medium for a Jerlov water type: IOPs and the Rayleigh + HG phase blend.
+
+    The blend weight b_p(λ)/b(λ) is given per wavelength (``particle_fraction_spectrum``),
+    g is Petzold's particle b_bp/b_p at every wavelength; ``particle_fraction`` is the 550 nm value.
+    """
     from .components import henyey_greenstein_g_from_bb_ratio  # noqa: PLC0415
 
     wavelengths = np.arange(360.0, 831.0, 5.0) if wavelengths is None else np.asarray(wavelengths, float)
@@ -100,4 +104,7 @@ def jerlov_type_optics(water_type: str, wavelengths: np.ndarray | None = None) -
     g = float(henyey_greenstein_g_from_bb_ratio(PETZOLD_PARTICLE_BB_RATIO))
     iops = WaterIOPs(wavelengths=wavelengths, absorption=a, scattering=b,
                      source=f"Jerlov type {water_type}: Williamson & Hollins (2022), doi:10.1364/AO.470464")
-    return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g)
+    b_w = np.interp(wavelengths, water.wavelengths, water.scattering)
+    fraction_spectrum = np.clip(np.divide(b - b_w, b, out=np.zeros_like(b), where=b > 0), 0.0, 1.0)
+    return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g,
+                        particle_fraction_spectrum=fraction_spectrum, particle_g_spectrum=np.full_like(b, g))

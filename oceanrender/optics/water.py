@@ -86,8 +86,31 @@ class MediumOptics:
     particle_g : float
         Henyey–Greenstein asymmetry g [-] of the particles, fitted to their
         backscattering ratio b_bp/b_p at 550 nm.
+    particle_fraction_spectrum, particle_g_spectrum : ndarray or None
+        The same two at every wavelength of ``iops`` [-] (b_p(λ)/b(λ), and g(λ) fitted
+        to b_bp(λ)/b_p(λ)); when given, the renderer's phase function follows them
+        (:mod:`oceanrender.render.phase`) and b_b/b of the render equals the
+        composition's at every wavelength. None: the 550 nm values at all wavelengths.
     """
 
     iops: WaterIOPs
     particle_fraction: float = 0.0
     particle_g: float = 0.0
+    particle_fraction_spectrum: np.ndarray | None = None
+    particle_g_spectrum: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        n = self.iops.wavelengths.size
+        for name in ("particle_fraction_spectrum", "particle_g_spectrum"):
+            value = getattr(self, name)
+            if value is None:
+                continue
+            value = np.asarray(value, dtype=float)
+            if value.shape != (n,) or not np.all(np.isfinite(value)):
+                raise ValueError(f"MediumOptics.{name}: need {n} finite values (one per wavelength of iops)")
+            object.__setattr__(self, name, value)
+        if self.particle_fraction_spectrum is not None and np.any(
+                (self.particle_fraction_spectrum < 0) | (self.particle_fraction_spectrum > 1)):
+            raise ValueError("MediumOptics.particle_fraction_spectrum: need 0 ≤ b_p/b ≤ 1")
+        if self.particle_g_spectrum is not None and np.any(np.abs(self.particle_g_spectrum) >= 1):
+            raise ValueError("MediumOptics.particle_g_spectrum: need |g| < 1")

@@ -111,16 +111,9 @@ def register() -> None:
     Idempotent. Mitsuba keeps Python plugins per variant, so call it again
     after switching variants.
     """
-    import mitsuba as mi  # noqa: PLC0415
+    from .plugins import register_once  # noqa: PLC0415
 
-    variant = mi.variant()
-    if variant is None:
-        raise RuntimeError("set a Mitsuba variant (oceanrender.runtime.activate_variant) before register()")
-    if variant in _REGISTERED:
-        return
-    cls = split_surface_integrator_class()
-    mi.register_integrator(SPLIT_INTEGRATOR, lambda props: cls(props))
-    _REGISTERED.add(variant)
+    register_once(_REGISTERED, "integrator", SPLIT_INTEGRATOR, split_surface_integrator_class)
 
 
 def split_surface_integrator_class() -> type:

@@ -195,7 +195,10 @@ def water_medium(optics: WaterIOPs | MediumOptics) -> dict:
     (Morel 1974) because of depolarisation — within 5 % of this in the
     forward/backward directions. With particles (:class:`MediumOptics`) the
     phase function is ``blendphase`` of that Rayleigh shape and a
-    Henyey–Greenstein lobe, weighted by the particles' share of scattering.
+    Henyey–Greenstein lobe, weighted by the particles' share of scattering; when
+    the optics carry that share and g per wavelength (``*_spectrum``, as
+    :func:`oceanrender.optics.components.composition_optics` gives them), the
+    blend is :mod:`oceanrender.render.phase`'s, which follows both with λ.
     """
     if isinstance(optics, MediumOptics):
         iops, fraction, g = optics.iops, optics.particle_fraction, optics.particle_g
@@ -208,7 +211,16 @@ def water_medium(optics: WaterIOPs | MediumOptics) -> dict:
             f"the medium must be defined over {lo:g}-{hi:g} nm"
         )
     phase = {"type": "rayleigh"}
-    if fraction > 0:
+    spectral = isinstance(optics, MediumOptics) and optics.particle_fraction_spectrum is not None
+    if spectral and np.any(optics.particle_fraction_spectrum > 0):
+        from .phase import PHASE_PLUGIN  # noqa: PLC0415 (registered by water_mesh before loading)
+
+        g_spectrum = optics.particle_g_spectrum if optics.particle_g_spectrum is not None else np.full_like(
+            iops.wavelengths, g)
+        phase = {"type": PHASE_PLUGIN,
+                 "weight": irregular_spectrum(iops.wavelengths, optics.particle_fraction_spectrum),
+                 "g": irregular_spectrum(iops.wavelengths, g_spectrum)}
+    elif fraction > 0:
         phase = {"type": "blendphase", "weight": float(fraction), "phase1": phase,
                  "phase2": {"type": "hg", "g": float(g)}}
     return {
