@@ -211,6 +211,13 @@ def test_cli_refuses_a_bad_composition(tmp_path, capsys):
     assert "[composition] soil_g_m3" in capsys.readouterr().err
 
 
+def test_cli_refuses_an_unknown_particle_phase(tmp_path, capsys):
+    path = tmp_path / "bad.toml"
+    path.write_text("[composition]\npreset = 'green coastal'\nparticle_phase = 'Petzold'\n")
+    assert main(["render", str(path)]) == 2
+    assert "[composition] particle_phase" in capsys.readouterr().err
+
+
 def test_cli_optics_report(tmp_path, capsys):
     import json
 

@@ -583,7 +583,27 @@ def preset(name: str) -> WaterComposition:
         raise KeyError(f"unknown water preset {name!r}; known: {', '.join(PRESETS)}") from None
 
 
-def composition_optics(composition, wavelengths: np.ndarray | None = None) -> MediumOptics:
+PARTICLE_PHASES = ("Henyey-Greenstein", "Fournier-Forand")
+"""Particle phase functions of :func:`composition_optics` (the first is the default)."""
+
+#: Scattering angles of the tabulated phase functions [deg]: 0, then 1e-5° to 180° log-spaced
+#: (the Fournier–Forand peak grows as θ^(μ−5) towards 0; its value at 0 is taken at 1e-5°).
+TABLE_ANGLES_DEG = np.concatenate([[0.0], np.geomspace(1e-5, 180.0, 1200)])
+
+
+def tabulated_mixture_phase(iops: CompositionIOPs) -> tuple[np.ndarray, np.ndarray]:
+    """(μ ascending from −1 to 1, p (n_λ, M) [sr⁻¹]) of :func:`mixture_phase_function` on :data:`TABLE_ANGLES_DEG`."""
+    angles = TABLE_ANGLES_DEG.copy()
+    angles[-1] = 180.0
+    values = mixture_phase_function(iops, angles)
+    values[:, 0] = values[:, 1]  # θ = 0: the value at the smallest tabulated angle (the peak is integrable)
+    mu = np.cos(np.radians(angles))[::-1]
+    mu[0], mu[-1] = -1.0, 1.0
+    return mu, values[:, ::-1]
+
+
+def composition_optics(composition, wavelengths: np.ndarray | None = None,
+                       particle_phase: str = PARTICLE_PHASES[0]) -> MediumOptics:
     """IOPs and phase model of a :class:`WaterComposition`.
 
     The phase function is a blend of the water's Rayleigh shape and one
@@ -592,8 +612,12 @@ def composition_optics(composition, wavelengths: np.ndarray | None = None) -> Me
     ``*_spectrum`` fields, rendered by :mod:`oceanrender.render.phase`), so that the
     medium's b_b/b equals the composition's at every wavelength (issue 19). The
     scalar ``particle_fraction`` and ``particle_g`` are the 550 nm values (for the
-    four-flux model and the LUTs).
+    four-flux model and the LUTs). ``particle_phase = "Fournier-Forand"`` tabulates the
+    mixture of water and one Fournier–Forand function per particle component, each with
+    that component's b_b/b (Mobley et al. 2002), instead (``phase_table``).
     """
+    if particle_phase not in PARTICLE_PHASES:
+        raise ValueError(f"particle_phase must be one of {list(PARTICLE_PHASES)}, got {particle_phase!r}")
     wavelengths = np.arange(360.0, 831.0, 5.0) if wavelengths is None else np.asarray(wavelengths, float)
     result = composition_iops(composition, wavelengths)
     water = result.components["water"]
@@ -606,8 +630,10 @@ def composition_optics(composition, wavelengths: np.ndarray | None = None) -> Me
                                                             result.backscattering - water.backscattering)
     iops = WaterIOPs(wavelengths=wavelengths, absorption=result.absorption, scattering=result.scattering,
                      source="composition: " + "; ".join(result.notes) if getattr(result, "notes", None) else "composition")
+    table = tabulated_mixture_phase(result) if particle_phase == "Fournier-Forand" else None
     return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g,
-                        particle_fraction_spectrum=fraction_spectrum, particle_g_spectrum=g_spectrum)
+                        particle_fraction_spectrum=fraction_spectrum, particle_g_spectrum=g_spectrum,
+                        phase_table=table)
 
 
 def _particle_phase_spectra(b, b_water, bb_particles):

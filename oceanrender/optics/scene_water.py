@@ -18,6 +18,7 @@ def water_composition(scene: Scene):
     from .components import WaterComposition, preset  # noqa: PLC0415
 
     settings = scene.composition.model_dump()
+    settings.pop("particle_phase")  # a property of the medium's phase model, not of the water (water_optics)
     base = preset(settings.pop("preset")) if scene.composition.preset else WaterComposition()
     explicit = {key: value for key, value in settings.items() if value is not None}
     return WaterComposition(**{**base.__dict__, **explicit})
@@ -34,4 +35,4 @@ def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
         return pure_seawater_iops(scene.water.iop_table)
     from .components import composition_optics  # noqa: PLC0415
 
-    return composition_optics(composition)
+    return composition_optics(composition, particle_phase=scene.composition.particle_phase)

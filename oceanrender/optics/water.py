@@ -91,6 +91,10 @@ class MediumOptics:
         to b_bp(λ)/b_p(λ)); when given, the renderer's phase function follows them
         (:mod:`oceanrender.render.phase`) and b_b/b of the render equals the
         composition's at every wavelength. None: the 550 nm values at all wavelengths.
+    phase_table : (mu, p) or None
+        A tabulated phase function of the whole water instead of the Rayleigh + HG blend:
+        cosines mu (M,) from −1 to 1 [-] and p (n_λ, M) [sr⁻¹] at the wavelengths of
+        ``iops`` (a 5 nm grid), e.g. Fournier–Forand per particle component.
     """
 
     iops: WaterIOPs
@@ -98,6 +102,7 @@ class MediumOptics:
     particle_g: float = 0.0
     particle_fraction_spectrum: np.ndarray | None = None
     particle_g_spectrum: np.ndarray | None = None
+    phase_table: tuple[np.ndarray, np.ndarray] | None = None
 
     def __post_init__(self) -> None:
         n = self.iops.wavelengths.size

@@ -157,3 +157,127 @@ def register() -> None:
     from .plugins import register_once  # noqa: PLC0415
 
     register_once(_REGISTERED, "phase", PHASE_PLUGIN, water_phase_class)
+
+
+# ---------------------------------------------------------------------------------------------
+# Tabulated phase functions (issue 19, item 2): p(λ_i, μ_j), one row per wavelength of a 5 nm grid
+# ---------------------------------------------------------------------------------------------
+
+TABULATED_PLUGIN = "oceanrender_tabulated_phase"
+"""Name of the tabulated spectral phase function in scene dicts."""
+
+_REGISTERED_TABLE: set[str] = set()
+
+
+def tabulated_phase_rows(mu, values):
+    """Normalised rows and their CDFs for a phase function piecewise linear in μ.
+
+    mu : (M,) increasing cosines from −1 to 1 [-]; values : (N, M) p ≥ 0 [sr⁻¹]. Returns
+    (p, cdf), both (N, M): p scaled so that 2π ∫ p dμ = 1 exactly for the piecewise-linear
+    function (trapezoids), cdf its running integral (0 at μ = −1, 1 at μ = 1).
+    """
+    import numpy as np  # noqa: PLC0415
+
+    mu = np.asarray(mu, dtype=float)
+    values = np.atleast_2d(np.asarray(values, dtype=float))
+    if mu.ndim != 1 or mu.size < 2 or np.any(np.diff(mu) <= 0) or mu[0] != -1.0 or mu[-1] != 1.0:
+        raise ValueError("tabulated phase: μ must increase from −1 to 1")
+    if values.shape[1] != mu.size or np.any(~np.isfinite(values)) or np.any(values < 0):
+        raise ValueError("tabulated phase: need finite p ≥ 0 with one column per μ")
+    pieces = 0.5 * (values[:, 1:] + values[:, :-1]) * np.diff(mu)[None, :] * 2.0 * math.pi
+    total = pieces.sum(axis=1, keepdims=True)
+    if np.any(total <= 0):
+        raise ValueError("tabulated phase: a row integrates to 0")
+    cdf = np.concatenate([np.zeros((values.shape[0], 1)), np.cumsum(pieces, axis=1)], axis=1) / total
+    cdf[:, -1] = 1.0
+    return values / total, cdf
+
+
+def tabulated_phase_class():
+    """The Mitsuba PhaseFunction of a table p(λ_i, μ_j) (uniform λ grid, shared μ nodes), for the active variant.
+
+    Properties: ``wavelengths`` (first, step, count) [nm], ``mu`` and ``values`` (row-major
+    N × M) as comma-separated strings. Each path wavelength uses its nearest table row;
+    sampling picks one of the path's wavelengths, inverts that row's CDF exactly (a
+    quadratic per interval), and returns p̄ = the mean over the path's wavelengths, as
+    :class:`WaterPhase` does.
+    """
+    import drjit as dr  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+    import numpy as np  # noqa: PLC0415
+
+    class TabulatedPhase(mi.PhaseFunction):
+        def __init__(self, props):
+            mi.PhaseFunction.__init__(self, props)
+            first, step, count = (float(x) for x in props["wavelengths"].split(","))
+            mu = np.array([float(x) for x in props["mu"].split(",")])
+            values = np.array([float(x) for x in props["values"].split(",")]).reshape(int(count), mu.size)
+            p, cdf = tabulated_phase_rows(mu, values)
+            self.first, self.step, self.rows, self.m = first, step, int(count), mu.size
+            self.mu = mi.Float(mu)
+            self.p = mi.Float(p.ravel())
+            self.cdf = mi.Float(cdf.ravel())
+            self.m_flags = mi.PhaseFunctionFlags.Anisotropic
+
+        def _row(self, wavelength):
+            index = dr.round((wavelength - self.first) / self.step)
+            return mi.UInt32(dr.clip(index, 0, self.rows - 1))
+
+        def _value(self, row, mu):
+            j = dr.binary_search(0, self.m - 2, lambda k: dr.gather(mi.Float, self.mu, k + 1) < mu)
+            mu0 = dr.gather(mi.Float, self.mu, j)
+            mu1 = dr.gather(mi.Float, self.mu, j + 1)
+            p0 = dr.gather(mi.Float, self.p, row * self.m + j)
+            p1 = dr.gather(mi.Float, self.p, row * self.m + j + 1)
+            t = dr.clip((mu - mu0) / (mu1 - mu0), 0.0, 1.0)
+            return dr.fma(t, p1 - p0, p0)
+
+        def _values(self, mei, mu):
+            value = mi.Spectrum(0.0)
+            for k in range(len(value)):
+                value[k] = self._value(self._row(mei.wavelengths[k]), mu)
+            return value, _mean(value)
+
+        def sample(self, ctx, mei, sample1, sample2, active=True):
+            n = len(mei.wavelengths)
+            index = mi.UInt32(dr.minimum(dr.floor(sample1 * n), n - 1))
+            row = self._row(_pick(mei.wavelengths, index))
+            u = sample2.x
+            base = row * self.m
+            j = dr.binary_search(0, self.m - 2, lambda k: dr.gather(mi.Float, self.cdf, base + k + 1) <= u)
+            c0 = dr.gather(mi.Float, self.cdf, base + j)
+            mu0 = dr.gather(mi.Float, self.mu, j)
+            mu1 = dr.gather(mi.Float, self.mu, j + 1)
+            p0 = dr.gather(mi.Float, self.p, base + j)
+            p1 = dr.gather(mi.Float, self.p, base + j + 1)
+            slope = (p1 - p0) / (mu1 - mu0)
+            r = dr.maximum(u - c0, 0.0) / (2.0 * math.pi)  # mass left in the interval [sr⁻¹ · 1]
+            # p0 t + slope t²/2 = r, the root in [0, μ1 − μ0] in the form without cancellation
+            t = 2.0 * r / (p0 + dr.safe_sqrt(p0 * p0 + 2.0 * slope * r))
+            t = dr.select(p0 + dr.safe_sqrt(p0 * p0 + 2.0 * slope * r) > 0.0, t, 0.0)
+            mu = dr.clip(mu0 + t, -1.0, 1.0)
+            sin_theta = dr.safe_sqrt(1.0 - mu * mu)
+            s, c = dr.sincos(2.0 * math.pi * sample2.y)
+            wo = mi.Frame3f(-mei.wi).to_world(mi.Vector3f(sin_theta * c, sin_theta * s, mu))
+            value, pdf = self._values(mei, mu)
+            weight = dr.select(pdf > 0.0, value / dr.select(pdf > 0.0, pdf, 1.0), 0.0)
+            return wo, mi.Spectrum(weight), pdf
+
+        def eval_pdf(self, ctx, mei, wo, active=True):
+            value, pdf = self._values(mei, dr.dot(wo, -mei.wi))
+            return mi.Spectrum(value), pdf
+
+        def traverse(self, callback):
+            pass
+
+        def to_string(self):
+            return f"TabulatedPhase[{self.rows} wavelengths × {self.m} cosines]"
+
+    return TabulatedPhase
+
+
+def register_tabulated() -> None:
+    """Register :data:`TABULATED_PLUGIN` with Mitsuba for the active variant (idempotent, per variant)."""
+    from .plugins import register_once  # noqa: PLC0415
+
+    register_once(_REGISTERED_TABLE, "phase", TABULATED_PLUGIN, tabulated_phase_class)

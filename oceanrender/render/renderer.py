@@ -124,9 +124,10 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: d
     props = mi.Properties()
     props["bsdf"] = mi.load_dict(bsdf)
     if medium is not None:
-        from .phase import register  # noqa: PLC0415
+        from .phase import register, register_tabulated  # noqa: PLC0415
 
-        register()  # the water's spectral phase function (water_medium)
+        register()  # the water's spectral phase functions (water_medium)
+        register_tabulated()
         props["interior"] = mi.load_dict(medium)
     mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
     if geometry.foam is not None:

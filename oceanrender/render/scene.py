@@ -212,7 +212,16 @@ def water_medium(optics: WaterIOPs | MediumOptics) -> dict:
         )
     phase = {"type": "rayleigh"}
     spectral = isinstance(optics, MediumOptics) and optics.particle_fraction_spectrum is not None
-    if spectral and np.any(optics.particle_fraction_spectrum > 0):
+    if isinstance(optics, MediumOptics) and optics.phase_table is not None:
+        from .phase import TABULATED_PLUGIN  # noqa: PLC0415 (registered by water_mesh before loading)
+
+        mu, table = optics.phase_table
+        step = np.diff(iops.wavelengths)
+        if not np.allclose(step, step[0]):
+            raise ValueError("a tabulated phase function needs IOPs on a uniform wavelength grid")
+        phase = {"type": TABULATED_PLUGIN, "wavelengths": f"{iops.wavelengths[0]:.9g},{step[0]:.9g},{iops.wavelengths.size}",
+                 "mu": ",".join(f"{x:.17g}" for x in mu), "values": ",".join(f"{x:.9g}" for x in np.ravel(table))}
+    elif spectral and np.any(optics.particle_fraction_spectrum > 0):
         from .phase import PHASE_PLUGIN  # noqa: PLC0415 (registered by water_mesh before loading)
 
         g_spectrum = optics.particle_g_spectrum if optics.particle_g_spectrum is not None else np.full_like(

@@ -55,6 +55,24 @@ def _backscatter_ratio(phase, wavelengths, nodes=400):
     return np.array(out)
 
 
+def _sample_consistently(phase, wavelengths, n, seed):
+    """n samples of ``phase``: (directions, weights (4, n)), after asserting pdf(sample) = eval_pdf and weight = p_λ/p̄.
+
+    Both to 1e-5 relative: the same float32 expressions evaluated twice.
+    """
+    import mitsuba as mi
+
+    mei = _medium_interaction(n, wavelengths)
+    sampler = mi.load_dict({"type": "independent"})
+    sampler.seed(seed, n)
+    ctx = mi.PhaseFunctionContext(None)
+    wo, weight, pdf = phase.sample(ctx, mei, sampler.next_1d(), sampler.next_2d())
+    value, pdf_eval = phase.eval_pdf(ctx, mei, wo)
+    np.testing.assert_allclose(np.array(pdf), np.array(pdf_eval), rtol=1e-5)
+    np.testing.assert_allclose(np.array(weight), np.array(value) / np.array(pdf)[None, :], rtol=1e-5)
+    return wo, np.array(weight)
+
+
 @pytest.mark.parametrize("name", ["Chl 0.03", *PRESETS])
 def test_rendered_backscatter_ratio_equals_the_compositions_at_every_wavelength(variant, name):
     """Issue 19 item 1: b_b/b of the medium's phase function = the composition's, 360–830 nm, within 1 %.
@@ -86,22 +104,13 @@ def test_sampling_is_exact(variant):
     returned by sample() equals eval_pdf's at the sampled direction to float32 rounding.
     """
     import drjit as dr
-    import mitsuba as mi
 
     optics = composition_optics(PRESETS["green coastal"])
     phase = _load_phase(optics)
     n = 200_000
     wavelengths = [400.0, 480.0, 600.0, 700.0]
-    mei = _medium_interaction(n, wavelengths)
-    sampler = mi.load_dict({"type": "independent"})
-    sampler.seed(7, n)
-    ctx = mi.PhaseFunctionContext(None)
-    wo, weight, pdf = phase.sample(ctx, mei, sampler.next_1d(), sampler.next_2d())
-    value, pdf_eval = phase.eval_pdf(ctx, mei, wo)
-    np.testing.assert_allclose(np.array(pdf), np.array(pdf_eval), rtol=1e-5)
-    np.testing.assert_allclose(np.array(weight), np.array(value) / np.array(pdf)[None, :], rtol=1e-5)
+    wo, weights = _sample_consistently(phase, wavelengths, n, seed=7)
     mu = -np.array(wo.z)
-    weights = np.array(weight)
     estimate = (weights * (mu < 0)[None, :]).mean(axis=1)
     error = (weights * (mu < 0)[None, :]).std(axis=1) / math.sqrt(n)
     exact = _backscatter_ratio(phase, wavelengths)
@@ -120,3 +129,53 @@ def test_pure_water_keeps_mitsubas_rayleigh():
     """No particles: Mitsuba's own ``rayleigh`` (b_b/b = ½ at every wavelength), no plugin."""
     optics = composition_optics(WaterComposition())
     assert water_medium(optics)["phase"] == {"type": "rayleigh"}
+
+
+def _tabulated(name):
+    optics = composition_optics(PRESETS[name], particle_phase="Fournier-Forand")
+    medium = water_medium(optics)
+    assert medium["phase"]["type"] == "oceanrender_tabulated_phase"
+    import mitsuba as mi
+
+    from oceanrender.render.phase import register_tabulated
+
+    register_tabulated()
+    return optics, mi.load_dict(medium["phase"])
+
+
+@pytest.mark.parametrize("name", list(PRESETS))
+def test_fournier_forand_table_keeps_the_compositions_backscatter_ratio(variant, name):
+    """Issue 19 item 2: the tabulated water + Fournier–Forand mixture has the composition's b_b/b, within 1 %.
+
+    Differences: the table's nearest 5 nm row (checked at the nodes here), the piecewise-linear
+    forward peak cut at 1e-5° (its normalisation moves b_b/b by < 0.2 %, measured), float32.
+    """
+    optics, phase = _tabulated(name)
+    nodes = np.arange(360.0, 831.0, 10.0)
+    iops = composition_iops(PRESETS[name], nodes)
+    np.testing.assert_allclose(_backscatter_ratio(phase, nodes), iops.backscattering / iops.scattering, rtol=0.01)
+
+
+def test_fournier_forand_table_is_sampled_exactly(variant):
+    """As test_sampling_is_exact, for the table: pdf(sample) = eval_pdf, weights p_λ/p̄, b_b/b within 5σ."""
+    optics, phase = _tabulated("green coastal")
+    n = 200_000
+    wavelengths = [400.0, 480.0, 600.0, 700.0]
+    wo, weights = _sample_consistently(phase, wavelengths, n, seed=11)
+    back = (-np.array(wo.z) < 0)[None, :]
+    estimate = (weights * back).mean(axis=1)
+    error = (weights * back).std(axis=1) / math.sqrt(n)
+    exact = _backscatter_ratio(phase, wavelengths)
+    assert np.all(np.abs(estimate - exact) < 5 * error + 1e-6)
+
+
+def test_particle_phase_is_a_scene_key():
+    from oceanrender.optics.scene_water import water_optics
+    from oceanrender.scene.settings import scene_from_dict
+
+    scene = scene_from_dict({"name": "ff", "composition": {"preset": "green coastal", "particle_phase": "Fournier-Forand"}})
+    assert water_optics(scene).phase_table is not None
+    default = scene_from_dict({"name": "hg", "composition": {"preset": "green coastal"}})
+    assert water_optics(default).phase_table is None
+    with pytest.raises(ValueError, match="Henyey-Greenstein"):
+        composition_optics(PRESETS["green coastal"], particle_phase="Petzold")
