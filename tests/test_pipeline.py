@@ -213,7 +213,7 @@ def test_cli_refuses_a_bad_composition(tmp_path, capsys):
 
 def test_cli_refuses_an_unknown_particle_phase(tmp_path, capsys):
     path = tmp_path / "bad.toml"
-    path.write_text("[composition]\npreset = 'green coastal'\nparticle_phase = 'Petzold'\n")
+    path.write_text("[composition]\npreset = 'green coastal'\nparticle_phase = 'Kopelevich'\n")
     assert main(["render", str(path)]) == 2
     assert "[composition] particle_phase" in capsys.readouterr().err
 

@@ -463,12 +463,14 @@ def pure_water_phase_function(angles_deg):
     return 3.0 * (1.0 + WATER_ANISOTROPY * c**2) / (4.0 * np.pi * (3.0 + WATER_ANISOTROPY))
 
 
-def mixture_phase_function(iops: CompositionIOPs, angles_deg) -> np.ndarray:
+def mixture_phase_function(iops: CompositionIOPs, angles_deg, particle_phase: str = "Fournier-Forand") -> np.ndarray:
     """Phase function of the mixture p(λ, θ) [sr⁻¹], shape (n_λ, n_θ).
 
     p = [b_w p_w + Σ_k b_k p_FF(θ; b_b,k / b_k)] / b: pure water's phase
     function plus one Fournier-Forand phase function per scattering particle
-    component, fitted to that component's backscattering ratio.
+    component, fitted to that component's backscattering ratio; with
+    ``particle_phase = "Petzold"`` every particle component scatters as
+    :func:`petzold_particle_phase`.
     """
     angles = np.asarray(angles_deg, dtype=float)
     total = np.zeros((iops.wavelengths.size, angles.size))
@@ -477,6 +479,9 @@ def mixture_phase_function(iops: CompositionIOPs, angles_deg) -> np.ndarray:
             continue
         if name == "water":
             total += comp.scattering[:, None] * pure_water_phase_function(angles)[None, :]
+            continue
+        if particle_phase == "Petzold":
+            total += comp.scattering[:, None] * petzold_particle_phase(angles)[None, :]
             continue
         n, mu = fournier_forand_from_bb_ratio(comp.backscattering_ratio)
         total += comp.scattering[:, None] * fournier_forand_phase_function(angles, n, mu)
@@ -583,7 +588,7 @@ def preset(name: str) -> WaterComposition:
         raise KeyError(f"unknown water preset {name!r}; known: {', '.join(PRESETS)}") from None
 
 
-PARTICLE_PHASES = ("Henyey-Greenstein", "Fournier-Forand")
+PARTICLE_PHASES = ("Henyey-Greenstein", "Fournier-Forand", "Petzold")
 """Particle phase functions of :func:`composition_optics` (the first is the default)."""
 
 #: Scattering angles of the tabulated phase functions [deg]: 0, then 1e-5° to 180° log-spaced
@@ -591,15 +596,78 @@ PARTICLE_PHASES = ("Henyey-Greenstein", "Fournier-Forand")
 TABLE_ANGLES_DEG = np.concatenate([[0.0], np.geomspace(1e-5, 180.0, 1200)])
 
 
-def tabulated_mixture_phase(iops: CompositionIOPs) -> tuple[np.ndarray, np.ndarray]:
-    """(μ ascending from −1 to 1, p (n_λ, M) [sr⁻¹]) of :func:`mixture_phase_function` on :data:`TABLE_ANGLES_DEG`."""
+def _tabulate(phase_of_angles) -> tuple[np.ndarray, np.ndarray]:
+    """(μ ascending from −1 to 1, p (..., M) [sr⁻¹]) of ``phase_of_angles(θ [deg])`` on :data:`TABLE_ANGLES_DEG`."""
     angles = TABLE_ANGLES_DEG.copy()
     angles[-1] = 180.0
-    values = mixture_phase_function(iops, angles)
-    values[:, 0] = values[:, 1]  # θ = 0: the value at the smallest tabulated angle (the peak is integrable)
+    values = np.array(phase_of_angles(angles), dtype=float)
+    values[..., 0] = values[..., 1]  # θ = 0: the value at the smallest tabulated angle (the peak is integrable)
     mu = np.cos(np.radians(angles))[::-1]
     mu[0], mu[-1] = -1.0, 1.0
-    return mu, values[:, ::-1]
+    return mu, values[..., ::-1]
+
+
+def tabulated_mixture_phase(iops: CompositionIOPs, particle_phase: str = "Fournier-Forand"
+                            ) -> tuple[np.ndarray, np.ndarray]:
+    """(μ ascending from −1 to 1, p (n_λ, M) [sr⁻¹]) of :func:`mixture_phase_function` on :data:`TABLE_ANGLES_DEG`."""
+    return _tabulate(lambda angles: mixture_phase_function(iops, angles, particle_phase))
+
+
+#: Petzold's (1972) three San Diego Harbor stations, whose mean is the "average particle" phase function.
+PETZOLD_HARBOR_STATIONS = ("NUC 2200", "NUC 2240", "NUC 2040")
+
+
+@functools.lru_cache(maxsize=1)
+def _petzold_harbor_table() -> tuple[np.ndarray, np.ndarray]:
+    """(θ [deg] from 1e-5 to 180, mean normalised phase function [sr⁻¹]) of :data:`PETZOLD_HARBOR_STATIONS`."""
+    import jerlov  # noqa: PLC0415
+
+    angles = TABLE_ANGLES_DEG[1:].copy()
+    angles[-1] = 180.0
+    mean = np.zeros(angles.size)
+    for station in PETZOLD_HARBOR_STATIONS:
+        vsf = jerlov.petzold_scattering(station)
+        log_t, log_v = np.log(vsf.angles_deg), np.log(vsf.vsf)
+        # below the first tabulated angle (0.1°) the report's own power-law extension: the log-log slope
+        # of its first two values, integrable (−1.2 to −1.4 > −2)
+        slope = (log_v[1] - log_v[0]) / (log_t[1] - log_t[0])
+        beta = np.where(angles >= vsf.angles_deg[0], np.exp(np.interp(np.log(angles), log_t, log_v)),
+                        vsf.vsf[0] * (angles / vsf.angles_deg[0]) ** slope)
+        mu = np.cos(np.radians(angles))
+        total = -2.0 * np.pi * np.trapezoid(beta, mu)  # b of the curve as tabulated here [m⁻¹]
+        mean += beta / total / len(PETZOLD_HARBOR_STATIONS)
+    return angles, mean
+
+
+def petzold_particle_phase(angles_deg) -> np.ndarray:
+    """Petzold's (1972) San Diego Harbor phase function p(θ) [sr⁻¹], the mean of three stations.
+
+    Each station's measured volume scattering function (530 nm; the ``jerlov`` package's
+    transcription) is extended below 0.1° by the power law of its first two values, normalised
+    so that 2π ∫ p dcosθ = 1 on :data:`TABLE_ANGLES_DEG`, and the three are averaged: the
+    "average particle" phase function of Mobley et al. (1993) and Mobley (1994, Table 3.10),
+    used for particles at every wavelength (b_b/b = 0.019, not the composition's b_bp/b_p).
+    Log-log interpolation between the report's 55 angles.
+
+    References
+    ----------
+    .. [1] Petzold, T. J. (1972). Volume scattering functions for selected ocean waters.
+       SIO Ref. 72-78, Scripps Institution of Oceanography.
+    .. [2] Mobley, C. D. et al. (1993). Comparison of numerical models for computing underwater
+       light fields. *Appl. Opt.* 32(36), 7484–7504. doi:10.1364/AO.32.007484
+    """
+    table_angles, table = _petzold_harbor_table()
+    a = np.clip(np.asarray(angles_deg, dtype=float), table_angles[0], 180.0)
+    return np.exp(np.interp(np.log(a), np.log(table_angles), np.log(table)))
+
+
+def tabulated_fournier_forand(bb_ratio: float) -> tuple[np.ndarray, np.ndarray]:
+    """(μ ascending from −1 to 1, p (M,) [sr⁻¹]) of the Fournier–Forand function with backscattered fraction b_b/b.
+
+    Mobley et al. (2002) parameters (:func:`fournier_forand_from_bb_ratio`) on :data:`TABLE_ANGLES_DEG`.
+    """
+    n, mu = fournier_forand_from_bb_ratio(bb_ratio)
+    return _tabulate(lambda angles: fournier_forand_phase_function(angles, n, mu))
 
 
 def composition_optics(composition, wavelengths: np.ndarray | None = None,
@@ -614,7 +682,9 @@ def composition_optics(composition, wavelengths: np.ndarray | None = None,
     scalar ``particle_fraction`` and ``particle_g`` are the 550 nm values (for the
     four-flux model and the LUTs). ``particle_phase = "Fournier-Forand"`` tabulates the
     mixture of water and one Fournier–Forand function per particle component, each with
-    that component's b_b/b (Mobley et al. 2002), instead (``phase_table``).
+    that component's b_b/b (Mobley et al. 2002), instead (``phase_table``); ``"Petzold"``
+    tabulates water plus Petzold's measured San Diego Harbor function for all particles
+    (:func:`petzold_particle_phase`; its own b_b/b).
     """
     if particle_phase not in PARTICLE_PHASES:
         raise ValueError(f"particle_phase must be one of {list(PARTICLE_PHASES)}, got {particle_phase!r}")
@@ -630,7 +700,7 @@ def composition_optics(composition, wavelengths: np.ndarray | None = None,
                                                             result.backscattering - water.backscattering)
     iops = WaterIOPs(wavelengths=wavelengths, absorption=result.absorption, scattering=result.scattering,
                      source="composition: " + "; ".join(result.notes) if getattr(result, "notes", None) else "composition")
-    table = tabulated_mixture_phase(result) if particle_phase == "Fournier-Forand" else None
+    table = None if particle_phase == "Henyey-Greenstein" else tabulated_mixture_phase(result, particle_phase)
     return MediumOptics(iops=iops, particle_fraction=fraction, particle_g=g,
                         particle_fraction_spectrum=fraction_spectrum, particle_g_spectrum=g_spectrum,
                         phase_table=table)
@@ -648,3 +718,45 @@ def _particle_phase_spectra(b, b_water, bb_particles):
     ratio = np.clip(np.divide(bb_particles, b_p, out=np.full_like(b, 0.5), where=has), 1e-9, 0.5)
     g = np.where(has, henyey_greenstein_g_from_bb_ratio(ratio), 0.0)
     return fraction, g
+
+
+def _rayleigh_phase(angles_deg):
+    """Rayleigh p(θ) = 3 (1 + cos²θ)/(16π) [sr⁻¹], the shape Mitsuba's ``rayleigh`` and the HG blend use."""
+    c = np.cos(np.radians(np.asarray(angles_deg, dtype=float)))
+    return 3.0 * (1.0 + c * c) / (16.0 * np.pi)
+
+
+def _henyey_greenstein(angles_deg, g):
+    """HG p(θ; g) = (1 − g²)/(4π (1 + g² − 2g cos θ)^{3/2}) [sr⁻¹] (Henyey & Greenstein 1941); g (...) broadcasts."""
+    c = np.cos(np.radians(np.asarray(angles_deg, dtype=float)))
+    g = np.asarray(g, dtype=float)[..., None]
+    return (1.0 - g * g) / (4.0 * np.pi * (1.0 + g * g - 2.0 * g * c) ** 1.5)
+
+
+def medium_phase_table(optics: WaterIOPs | MediumOptics, wavelengths_nm) -> tuple[np.ndarray, np.ndarray]:
+    """The phase function the renderer gives the medium, tabulated: (μ (M,) from −1 to 1 [-], p (W, M) [sr⁻¹]).
+
+    Pure water (:class:`WaterIOPs`): Mitsuba's ``rayleigh``. A :class:`MediumOptics`:
+    its ``phase_table`` (the row of the nearest table wavelength, as
+    :data:`oceanrender.render.phase.TABULATED_PLUGIN` looks it up), else the Rayleigh +
+    HG blend with weight and g per wavelength (``oceanrender_water_phase``; the 550 nm
+    values where no spectra are given, as Mitsuba's ``blendphase``). For the four-flux
+    coefficients (:mod:`oceanrender.optics.streams`).
+    """
+    wl = np.atleast_1d(np.asarray(wavelengths_nm, dtype=float))
+    if isinstance(optics, WaterIOPs):
+        mu, p = _tabulate(_rayleigh_phase)
+        return mu, np.broadcast_to(p, (wl.size, p.size)).copy()
+    grid = optics.iops.wavelengths
+    if optics.phase_table is not None:
+        mu, table = optics.phase_table
+        rows = np.clip(np.rint((wl - grid[0]) / (grid[1] - grid[0])).astype(int), 0, grid.size - 1)
+        return np.asarray(mu, float), np.asarray(table, float)[rows]
+    if optics.particle_fraction_spectrum is not None:
+        w = np.interp(wl, grid, optics.particle_fraction_spectrum)
+        g = np.interp(wl, grid, optics.particle_g_spectrum if optics.particle_g_spectrum is not None
+                      else np.full(grid.size, optics.particle_g))
+    else:
+        w, g = np.full(wl.size, optics.particle_fraction), np.full(wl.size, optics.particle_g)
+    return _tabulate(lambda angles: (1.0 - w[:, None]) * _rayleigh_phase(angles)[None, :]
+                     + w[:, None] * _henyey_greenstein(angles, g))

@@ -283,9 +283,10 @@ class CompositionSettings(_Section):
     calcite_g_m3: float | None = Field(None, ge=0, le=10_000, description="limestone/calcite particles [g m⁻³]")
     cdom_a440_per_m: float | None = Field(None, ge=0, le=100, description="CDOM absorption at 440 nm [m⁻¹]")
     cdom_slope_per_nm: float | None = Field(None, ge=0.005, le=0.03, description="CDOM spectral slope [nm⁻¹]")
-    particle_phase: Literal["Henyey-Greenstein", "Fournier-Forand"] = Field(
+    particle_phase: Literal["Henyey-Greenstein", "Fournier-Forand", "Petzold"] = Field(
         "Henyey-Greenstein", description="phase function of the particles: one HG lobe with g(λ) fitted to "
-                                         "b_bp/b_p, or Fournier-Forand per component, tabulated (docs/optics.md)")
+                                         "b_bp/b_p, Fournier-Forand per component, or Petzold's measured San Diego "
+                                         "Harbor function, tabulated (docs/optics.md)")
 
 
 #: Interpolations of keyframed motion (see :mod:`oceanrender.scene.motion`).

@@ -131,8 +131,8 @@ def test_pure_water_keeps_mitsubas_rayleigh():
     assert water_medium(optics)["phase"] == {"type": "rayleigh"}
 
 
-def _tabulated(name):
-    optics = composition_optics(PRESETS[name], particle_phase="Fournier-Forand")
+def _tabulated(name, particle_phase="Fournier-Forand"):
+    optics = composition_optics(PRESETS[name], particle_phase=particle_phase)
     medium = water_medium(optics)
     assert medium["phase"]["type"] == "oceanrender_tabulated_phase"
     import mitsuba as mi
@@ -178,4 +178,34 @@ def test_particle_phase_is_a_scene_key():
     default = scene_from_dict({"name": "hg", "composition": {"preset": "green coastal"}})
     assert water_optics(default).phase_table is None
     with pytest.raises(ValueError, match="Henyey-Greenstein"):
-        composition_optics(PRESETS["green coastal"], particle_phase="Petzold")
+        composition_optics(PRESETS["green coastal"], particle_phase="Kopelevich")
+
+
+def _back_fraction(mu, p):
+    """b_b/b of a table piecewise linear in μ, split exactly at μ = 0 (a node put there by linear interpolation)."""
+    j = np.searchsorted(mu, 0.0)
+    p0 = p[j - 1] + (p[j] - p[j - 1]) * (0.0 - mu[j - 1]) / (mu[j] - mu[j - 1])
+    return np.trapezoid(np.append(p[:j], p0), np.append(mu[:j], 0.0)) / np.trapezoid(p, mu)
+
+
+def test_petzold_particles_backscatter_as_petzold_measured():
+    """Issue 19 item 2: the Petzold particle phase function's b_b/b is that of the report's three San
+    Diego Harbor stations, 0.019, 0.018, 0.020 (printed to two digits): mean 0.019 within 0.001."""
+    from oceanrender.optics.components import _tabulate, petzold_particle_phase
+
+    mu, p = _tabulate(petzold_particle_phase)
+    assert abs(_back_fraction(mu, p) - 0.019) <= 0.001
+    assert 2 * math.pi * np.trapezoid(p, mu) == pytest.approx(1.0, rel=1e-3)  # normalised on the table
+
+
+def test_petzold_table_renders_the_mixtures_backscatter_ratio(variant):
+    """The loaded plugin's b_b/b equals the water + Petzold mixture's own, (b_w/2 + b_p B_P)/b, within 1 %."""
+    from oceanrender.optics.components import _tabulate, petzold_particle_phase
+
+    optics, phase = _tabulated("green coastal", "Petzold")
+    B_p = _back_fraction(*_tabulate(petzold_particle_phase))
+    nodes = np.arange(400.0, 701.0, 50.0)
+    iops = composition_iops(PRESETS["green coastal"], nodes)
+    b_w = iops.components["water"].scattering
+    expected = (0.5 * b_w + B_p * (iops.scattering - b_w)) / iops.scattering
+    np.testing.assert_allclose(_backscatter_ratio(phase, nodes), expected, rtol=0.01)
