@@ -104,6 +104,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .fresnel import N_AIR, N_WATER, diffuse_reflectance_Fresnel, reflectance_Fresnel, refracted_cosine
+from .streams import StreamCoefficients
 
 __all__ = [
     "MU_D",
@@ -175,7 +176,7 @@ class FourFluxResult:
     B_refr : ndarray (...)
         Radiance refracted out of the water towards the viewer,
         L_u (1 − F(θ_v))/n_w² [W m⁻² sr⁻¹ nm⁻¹].
-    Q : float
+    Q : float or ndarray (...)
         The Q factor E_u/L_u used [sr].
     """
 
@@ -190,7 +191,7 @@ class FourFluxResult:
     R: NDArray[np.float64]
     L_u: NDArray[np.float64]
     B_refr: NDArray[np.float64]
-    Q: float
+    Q: float | NDArray[np.float64]
 
     @property
     def E_d(self) -> NDArray[np.float64]:
@@ -323,6 +324,7 @@ def four_flux(
     view_zenith: float = 0.0,
     Q: float = Q_LAMBERTIAN,
     internal_reflection: bool = False,
+    coefficients: StreamCoefficients | None = None,
 ) -> FourFluxResult:
     """Analytic four-flux irradiance field of a homogeneous water column.
 
@@ -371,6 +373,12 @@ def four_flux(
         If True, the surface reflects r̄_wa ≈ 0.475 of E_u(0) back down
         (Eq. 5 with the bracketed term); default False (the plain Fresnel
         transmission of sun and sky only).
+    coefficients : StreamCoefficients, optional
+        Coefficients of Eqs. (1)–(3) per wavelength derived from the phase function
+        and the refracted sun (:func:`oceanrender.optics.streams.stream_coefficients`,
+        issue 19); they replace ``mu_d``, ``mu_u`` and the b_b/b_f of every stream,
+        and, where they carry them, ``Q`` and the r̄_wa of internal reflection.
+        Default None: the fixed closure above.
 
     Returns
     -------
@@ -447,7 +455,7 @@ def four_flux(
     for name, v in (("mu_d", mu_d), ("mu_u", mu_u)):
         if not 0.0 < float(v) <= 1.0:
             raise ValueError(f"{name} must lie in (0, 1]")
-    if not (float(n_water) > 0 and float(Q) > 0):
+    if not (float(n_water) > 0 and np.all(np.asarray(Q) > 0)):
         raise ValueError("n_water and Q must be positive")
     if np.any((a == 0) & (bb > 0)) and mu_d == mu_u:
         raise ValueError(
@@ -461,19 +469,34 @@ def four_flux(
     S0 = E_sun * mu_s * (1.0 - reflectance_Fresnel(mu_s, N_AIR, n_water))  # Eq. (4)
     D0 = E_sky * (1.0 - diffuse_reflectance_Fresnel(N_AIR, n_water))  # Eq. (5)
     rho = float(diffuse_reflectance_Fresnel(n_water, N_AIR)) if internal_reflection else 0.0
+    if internal_reflection and coefficients is not None and coefficients.r_wa is not None:
+        rho = np.asarray(coefficients.r_wa, dtype=float)  # Fresnel over the actual upwelling (streams)
+    if coefficients is not None and coefficients.Q is not None:
+        Q = np.asarray(coefficients.Q, dtype=float)
 
     # -- coefficients of Eqs. (1)–(3) ------------------------------------------
-    b_f = b_tot - bb if bf_given else np.zeros_like(a)
-    k = (a + bb + b_f) / mu_w  # Eq. (1)
-    alpha_d, alpha_u = (a + bb) / mu_d, (a + bb) / mu_u  # Eqs. (2)–(3)
-    beta_d, beta_u = bb / mu_d, bb / mu_u  # Eqs. (2)–(3)
-    s_d, s_u = S0 * b_f / mu_w, -S0 * bb / mu_w  # beam source of Eqs. (2)–(3) at z = 0
+    if coefficients is None:  # the fixed closure: stream cosines μ_d, μ_u, b_b for every stream
+        b_f = b_tot - bb if bf_given else np.zeros_like(a)
+        c_beam, b_fs, b_bs = a + bb + b_f, b_f, bb
+        m_d, m_u, bb_d, bb_u = mu_d, mu_u, bb, bb
+    else:  # from the phase function and μ_w (oceanrender.optics.streams)
+        co = coefficients
+        fields = (co.c_beam, co.b_fs, co.b_bs, co.mu_d, co.mu_u, co.b_bd, co.b_bu)
+        if np.broadcast_shapes(a.shape, *(np.shape(v) for v in fields)) != a.shape:
+            raise ValueError("coefficients must broadcast to the shape of the spectral inputs")
+        c_beam, b_fs, b_bs, m_d, m_u, bb_d, bb_u = (np.broadcast_to(np.asarray(v, dtype=float), a.shape)
+                                                    for v in fields)
+        b_f = b_fs
+    k = c_beam / mu_w  # Eq. (1)
+    alpha_d, alpha_u = (a + bb_d) / m_d, (a + bb_u) / m_u  # Eqs. (2)–(3)
+    beta_d, beta_u = bb_d / m_d, bb_u / m_u  # Eqs. (2)–(3)
+    s_d, s_u = S0 * b_fs / mu_w, -S0 * b_bs / mu_w  # beam source of Eqs. (2)–(3) at z = 0
 
     # Eigenvalues of [[−α_d, β_u], [−β_d, α_u]]: λ = t ± q, t = (α_u − α_d)/2,
-    # q² = t² + a(a + 2 b_b)/(μ_d μ_u); the root of smaller magnitude via the
-    # product λ₁ λ₂ = −a(a + 2 b_b)/(μ_d μ_u) to avoid cancellation.
+    # q² = t² + a(a + b_bd + b_bu)/(μ_d μ_u); the root of smaller magnitude via the
+    # product λ₁ λ₂ = −a(a + b_bd + b_bu)/(μ_d μ_u) to avoid cancellation.
     t = 0.5 * (alpha_u - alpha_d)
-    neg_det = a * (a + 2.0 * bb) / (mu_d * mu_u)
+    neg_det = a * (a + bb_d + bb_u) / (m_d * m_u)
     q = np.sqrt(t * t + neg_det)
     lam2 = np.where(t >= 0, t + q, _safe_div(neg_det, q - t))
     lam1 = -np.where(t <= 0, q - t, _safe_div(neg_det, q + t))
@@ -481,8 +504,8 @@ def four_flux(
     # Mode ratios r₁ = E_u/E_dif (downward mode), r₂ = E_dif/E_u (upward mode);
     # 0 for a = b_b = 0, where any basis is an eigenbasis.
     r1, r2 = _safe_div(beta_d, den), _safe_div(beta_u, den)
-    one_m_r1 = _safe_div(a / mu_d + lam2, den, fill=1.0)  # 1 − r₁ without cancellation
-    one_m_r2 = _safe_div(a / mu_u - lam1, den, fill=1.0)  # 1 − r₂ without cancellation
+    one_m_r1 = _safe_div(a / m_d + lam2, den, fill=1.0)  # 1 − r₁ without cancellation
+    one_m_r2 = _safe_div(a / m_u - lam1, den, fill=1.0)  # 1 − r₂ without cancellation
     one_m_r1r2 = one_m_r1 + r1 * one_m_r2
 
     # Beam source in the mode basis and the particular solution of mode 2.
@@ -536,5 +559,5 @@ def four_flux(
         R=_ratio(E_u0, E_surface),
         L_u=L_u,
         B_refr=L_u * T_view / n_water**2,
-        Q=float(Q),
+        Q=Q if np.ndim(Q) else float(Q),
     )

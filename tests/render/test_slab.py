@@ -1,0 +1,82 @@
+"""The Mitsuba Monte Carlo slab (render/slab.py) against closed forms, and the four-flux model against it.
+
+Issue 19, item 3: K_d and R(0⁻) of the four-flux model with coefficients from the phase
+function and the refracted sun within 5 % of a Mitsuba Monte Carlo slab with the same
+IOPs and phase function. The whole grid is in docs/optics.md (scripts/fourflux_slab_mc.py,
+scripts/fourflux_agreement.py); here three cells at small sample counts.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from oceanrender.optics.components import tabulated_fournier_forand
+from oceanrender.optics.fourflux import four_flux
+from oceanrender.optics.streams import deep_layer, legendre_moments, stream_coefficients
+from oceanrender.render.slab import slab_light_field
+
+pytestmark = pytest.mark.render
+
+ISOTROPIC = (np.array([-1.0, 0.0, 1.0]), np.full(3, 1.0 / (4.0 * np.pi)))
+
+
+def _h_function(omega, mu, nodes=400, iterations=2000):
+    x, w = np.polynomial.legendre.leggauss(nodes)
+    x, w = 0.5 * (x + 1.0), 0.5 * w
+    H = np.ones_like(x)
+    for _ in range(iterations):
+        H = 1.0 / (1.0 - 0.5 * omega * x * np.sum(w * H / (x[:, None] + x[None, :]), axis=1))
+    return 1.0 / (1.0 - 0.5 * omega * mu * np.sum(w * H / (mu + x)))
+
+
+def test_unscattered_beam_follows_beer_lambert(variant):
+    """b → 0: E_d(z) = cos θ e^{−a z / cos θ}. The meter sees the beam only through paths that
+    reach the plane unscattered (a Bernoulli estimate): 5σ plus 0.2 % for the emitter calibration."""
+    a, zenith, z = 0.1, 30.0, np.array([1.0, 5.0])
+    light = slab_light_field(a, 1e-9, ISOTROPIC, zenith, z, spp=4096, passes=3)
+    mu = math.cos(math.radians(zenith))
+    exact = mu * np.exp(-a * z / mu)
+    assert np.all(np.abs(light.E_d - exact) <= 5 * light.E_d_error + 2e-3 * exact)
+
+
+def test_isotropic_half_space_albedo_matches_chandrasekhar(variant):
+    """R(0⁻) of a deep isotropic medium under a normal beam = 1 − H(1) √(1 − ω) (Chandrasekhar
+    1960): 0.5355 at ω = 0.95. Within 5σ of the Monte Carlo plus 0.5 % (the slab's finite width
+    and depth, e^{−14} and e^{−30})."""
+    omega = 0.95
+    light = slab_light_field(0.1, 0.1 * omega / (1 - omega), ISOTROPIC, 0.0, [1.0], spp=8192, passes=3, spp_up=16384)
+    exact = 1.0 - _h_function(omega, 1.0) * math.sqrt(1.0 - omega)
+    assert abs(light.R - exact) <= 5 * light.E_u0_error + 5e-3 * exact
+
+
+def _first_optical_depth_K(z, E, E0):
+    """1/z₁ with ln E_d = ln E0 − 1, quadratic in z through the three measured depths."""
+    coeffs = np.polyfit(z, np.log(E), 2)
+    roots = np.roots(coeffs - np.array([0.0, 0.0, math.log(E0) - 1.0]))
+    real = roots[np.isreal(roots)].real
+    return 1.0 / real[np.argmin(np.abs(real - z[1]))]
+
+
+@pytest.mark.parametrize(("bb_over_a", "omega", "zenith_air"), [(1.0, 0.95, 0.0), (0.1, 0.8, 60.0)])
+def test_four_flux_from_the_phase_function_agrees_with_monte_carlo(variant, bb_over_a, omega, zenith_air):
+    """K_d over the first optical depth and R(0⁻) within 5 % (the issue's goal) of the Mitsuba slab
+    with the same a, b and Fournier–Forand phase function; the fixed closure of today misses
+    both cells by 13–45 % (docs/optics.md). Monte Carlo noise here: ≤ 1 % (asserted)."""
+    a = 0.1
+    b, bb = a * omega / (1 - omega), bb_over_a * a
+    mu, p = tabulated_fournier_forand(bb / b)
+    theta_w = math.degrees(math.asin(math.sin(math.radians(zenith_air)) / 1.334))
+    mu_w = math.cos(math.radians(theta_w))
+    layer = deep_layer(a, b, legendre_moments(mu, p, 65), mu_w)
+    z1 = 1.0 / float(np.squeeze(four_flux([a], [bb], 1.0, 0.0, theta_w, np.inf, 0.0, [0.0], b=[b], n_water=1.0,
+                                          coefficients=stream_coefficients([a], [b], mu, p[None], mu_w)).K_d))
+    z = z1 * np.array([0.85, 1.0, 1.15])
+    light = slab_light_field(a, b, (mu, p), theta_w, z, spp=16384, passes=3, spp_up=32768, seed=5)
+    assert np.all(light.E_d_error <= 0.01 * light.E_d) and light.E_u0_error <= 0.01 * light.E_u0
+    K_mc = _first_optical_depth_K(z, light.E_d, light.E_d0)
+    model = four_flux([a], [bb], 1.0, 0.0, theta_w, np.inf, 0.0, [0.0], b=[b], n_water=1.0,
+                      coefficients=stream_coefficients([a], [b], mu, p[None], mu_w))
+    assert float(model.K_d[0]) == pytest.approx(K_mc, rel=0.05)
+    assert float(model.R[0]) == pytest.approx(light.R, rel=0.05)
+    assert layer.E_u0 / mu_w == pytest.approx(light.R, rel=0.05)  # the discrete ordinates the coefficients use
