@@ -350,6 +350,25 @@ def _beam_sources(layer: DeepLayer, z1: float) -> tuple[float, float, float]:
     return c_beam, s_d * mu_w / S0, -s_u * mu_w / S0
 
 
+def _surface_beam_backscatter(layer: DeepLayer, c_beam: float, b_fs: float, surface: DeepLayer, sky_in: float) -> float:
+    """b_bs [m⁻¹] giving the four-flux model the E_u(0⁻) of the layer under its level surface and sky.
+
+    With the surface's reflection ρ = r_wa of the upwelling and the transmitted sky D (per unit
+    in-water beam normal irradiance) as the four-flux model's Eq. (5) has them, the deep solution
+    has y₁(0) (1 − ρR) = D + y₂(0)(ρ − R), so E_u(0) = R D/(1 − ρR) + y₂(0)(1 − R²)/(1 − ρR) with
+    y₂(0) = −(s_u − R s_d)/((1 − R²)(K + k)): linear in s_u = −S₀ b_bs/μ_w. This replaces the
+    index-matched fit of b_bs (``_beam_sources``) where a surface is given, so that R(0⁻) is the
+    transport's under the sky/sun ratio of the scene (a uniform sky).
+    """
+    K, R, mu_w = layer.K_inf, layer.R_inf, layer.mu_w
+    k, S0 = c_beam / mu_w, mu_w
+    rho = surface.reflected / surface.E_u0
+    y2 = (surface.E_u0 - R * sky_in / (1.0 - rho * R)) * (1.0 - rho * R) / (1.0 - R * R)
+    s_d = S0 * b_fs / mu_w
+    s_u = R * s_d - (1.0 - R * R) * (K + k) * y2
+    return -s_u * mu_w / S0
+
+
 def surface_light(sun_irradiance: ArrayLike, sky_irradiance: ArrayLike, sun_zenith: float, n_water: float
                   ) -> tuple[float, NDArray[np.float64]]:
     """(μ_w, sky per unit in-water beam normal irradiance) for :func:`stream_coefficients` [-].
@@ -377,7 +396,8 @@ def stream_coefficients(a: ArrayLike, b: ArrayLike, mu: ArrayLike, p: ArrayLike,
     whose horizontal irradiance above the water is ``sky`` (W,) per unit normal irradiance
     of the refracted beam in the water [-]: Q = E_u(0⁻)/L_u(nadir) [sr] and the share r_wa
     of E_u(0⁻) reflected back down [-] (Fresnel at every angle of the actual upwelling,
-    instead of a uniform field's 0.475).
+    instead of a uniform field's 0.475), and b_bs then gives the four-flux model that layer's
+    E_u(0⁻) under the sky (:func:`_surface_beam_backscatter`).
     """
     a = np.atleast_1d(np.asarray(a, dtype=float))
     b = np.atleast_1d(np.asarray(b, dtype=float))
@@ -386,6 +406,10 @@ def stream_coefficients(a: ArrayLike, b: ArrayLike, mu: ArrayLike, p: ArrayLike,
     sky = np.broadcast_to(np.asarray(sky, dtype=float), a.shape)
     chi = legendre_moments(mu, p, 2 * n + 1)
     keys = ("c_beam", "b_fs", "b_bs", "mu_d", "mu_u", "b_bd", "b_bu", "Q", "r_wa")
+    if n_water is not None:
+        from .fresnel import N_AIR, diffuse_reflectance_Fresnel  # noqa: PLC0415
+
+        sky_transmitted = 1.0 - float(diffuse_reflectance_Fresnel(N_AIR, n_water))  # as four_flux's Eq. (5)
     out = {key: np.full(a.shape, np.nan) for key in keys}
     for i in range(a.size):
         row = chi[i if chi.shape[0] > 1 else 0]
@@ -404,11 +428,10 @@ def stream_coefficients(a: ArrayLike, b: ArrayLike, mu: ArrayLike, p: ArrayLike,
                                  back_phase=back)
             out["Q"][i] = surface.E_u0 / surface.nadir_radiance
             out["r_wa"][i] = surface.reflected / surface.E_u0
+            out["b_bs"][i] = _surface_beam_backscatter(layer, c_beam, b_fs, surface, sky_transmitted * float(sky[i]))
     if n_water is None:
         out["Q"] = out["r_wa"] = None
     else:  # no scattering: nothing upwells; keep the Lambertian and uniform-field values there
-        from .fresnel import N_AIR, diffuse_reflectance_Fresnel  # noqa: PLC0415
-
         out["Q"] = np.where(np.isfinite(out["Q"]), out["Q"], np.pi)
         out["r_wa"] = np.where(np.isfinite(out["r_wa"]), out["r_wa"], float(diffuse_reflectance_Fresnel(n_water, N_AIR)))
     return StreamCoefficients(**out)

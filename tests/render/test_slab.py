@@ -15,19 +15,11 @@ from oceanrender.optics.components import tabulated_fournier_forand
 from oceanrender.optics.fourflux import four_flux
 from oceanrender.optics.streams import deep_layer, legendre_moments, stream_coefficients
 from oceanrender.render.slab import slab_light_field
+from tests.chandrasekhar import h_function
 
 pytestmark = pytest.mark.render
 
 ISOTROPIC = (np.array([-1.0, 0.0, 1.0]), np.full(3, 1.0 / (4.0 * np.pi)))
-
-
-def _h_function(omega, mu, nodes=400, iterations=2000):
-    x, w = np.polynomial.legendre.leggauss(nodes)
-    x, w = 0.5 * (x + 1.0), 0.5 * w
-    H = np.ones_like(x)
-    for _ in range(iterations):
-        H = 1.0 / (1.0 - 0.5 * omega * x * np.sum(w * H / (x[:, None] + x[None, :]), axis=1))
-    return 1.0 / (1.0 - 0.5 * omega * mu * np.sum(w * H / (mu + x)))
 
 
 def test_unscattered_beam_follows_beer_lambert(variant):
@@ -46,7 +38,7 @@ def test_isotropic_half_space_albedo_matches_chandrasekhar(variant):
     and depth, e^{−14} and e^{−30})."""
     omega = 0.95
     light = slab_light_field(0.1, 0.1 * omega / (1 - omega), ISOTROPIC, 0.0, [1.0], spp=8192, passes=3, spp_up=16384)
-    exact = 1.0 - _h_function(omega, 1.0) * math.sqrt(1.0 - omega)
+    exact = 1.0 - h_function(omega, 1.0) * math.sqrt(1.0 - omega)
     assert abs(light.R - exact) <= 5 * light.E_u0_error + 5e-3 * exact
 
 
