@@ -514,7 +514,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     from .optics.report import REPORT_WAVELENGTHS, scene_optics  # noqa: PLC0415
     from .render.irradiance import sky_irradiance_spectra  # noqa: PLC0415
     from .optics.water import pure_seawater_iops  # noqa: PLC0415
-    from .optics.scene_water import water_composition  # noqa: PLC0415
+    from .optics.scene_water import water_composition, water_phase_table  # noqa: PLC0415
 
     wavelengths = REPORT_WAVELENGTHS
     composition = water_composition(scene)
@@ -535,7 +535,8 @@ def cmd_optics(args: argparse.Namespace) -> int:
     direct, diffuse = sky_irradiance_spectra(scene.sun, wavelengths, spp=scene.render.white_spp)
     depth = scene.water.depth
     z = np.linspace(0.0, min(depth, 100.0), 101)
-    report = scene_optics(a, b, bb, direct, diffuse, 90.0 - scene.sun.elevation, depth, z, n_water=scene.water.ior)
+    report = scene_optics(a, b, bb, direct, diffuse, 90.0 - scene.sun.elevation, depth, z, n_water=scene.water.ior,
+                          phase=water_phase_table(scene, wavelengths))
     metadata = {"scene": scene.name, "variant": runtime.variant, "oceanrender_version": __version__,
                 "composition": None if composition is None else composition.__dict__,
                 "jerlov_type": scene.water.jerlov_type,

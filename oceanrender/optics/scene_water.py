@@ -36,3 +36,11 @@ def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
     from .components import composition_optics  # noqa: PLC0415
 
     return composition_optics(composition, particle_phase=scene.composition.particle_phase)
+
+
+def water_phase_table(scene: Scene, wavelengths_nm):
+    """(μ, p (W, M)) of the phase function the renderer gives the scene's water [-, sr⁻¹]
+    (:func:`oceanrender.optics.components.medium_phase_table`), for the four-flux coefficients."""
+    from .components import medium_phase_table  # noqa: PLC0415
+
+    return medium_phase_table(water_optics(scene), wavelengths_nm)

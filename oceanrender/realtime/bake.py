@@ -22,7 +22,6 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from ..optics.fourflux import MU_D, MU_U
 from ..optics.report import REPORT_WAVELENGTHS
 from ..optics.seafloor import linear_reflectance
 from ..render.scene import sun_direction
@@ -234,11 +233,13 @@ def measure_scene_light(scene: Scene, settings: BakeSettings, white_XYZ: NDArray
 
 def water_column(scene: Scene, light: SceneLight) -> WaterColumn:
     """The :class:`~oceanrender.realtime.luts.WaterColumn` of the scene under its measured light."""
+    from ..optics.scene_water import water_phase_table  # noqa: PLC0415
+
     a, b, bb = scene_iops(scene, light.wavelengths)
     return WaterColumn(wavelengths=light.wavelengths, absorption=np.asarray(a, float), scattering=np.asarray(b, float),
                        backscattering=np.asarray(bb, float), sun_irradiance=light.sun_irradiance,
                        sky_irradiance=light.sky_irradiance, sun_zenith=90.0 - scene.sun.elevation,
-                       n_water=scene.water.ior)
+                       n_water=scene.water.ior, phase=water_phase_table(scene, light.wavelengths))
 
 
 def reference_albedo(scene: Scene, settings: BakeSettings) -> tuple[float, float]:
@@ -308,8 +309,10 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
               "vision": {**phi.describe(), "adaptation_source": adaptation_source},
               "sun": scene.sun.model_dump(), "n_water": scene.water.ior, "settings": settings.describe()}
     optics = {"iops": "oceanrender.realtime.bake.scene_iops (as `oceanrender optics`)",
-              "four_flux": {"mu_d": MU_D, "mu_u": MU_U, "Q_sr": float(np.pi), "internal_reflection": True,
-                            "beam_attenuation": "c = a + b, forward scattering feeds the diffuse stream"},
+              "four_flux": {"coefficients": "oceanrender.optics.streams: from the medium's phase function and the "
+                                            "refracted sun (delta-M discrete ordinates; asymptotic diffuse block, "
+                                            "beam sources matching R(0-) and E_d at the first optical depth)",
+                            "Q_sr": float(np.pi), "internal_reflection": True},
               "water": scene.water.model_dump(),
               "composition": None if scene.composition is None else scene.composition.model_dump(),
               "reference_albedo_400_700": list(R0_pair), "floor_albedo_400_700": list(floor_pair)}

@@ -67,6 +67,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..optics.fourflux import four_flux
 from ..optics.fresnel import N_AIR, fresnel_correction, reflectance_Fresnel
+from ..optics.streams import StreamCoefficients, stream_coefficients, surface_light
 from ..vision.model import VisionModel
 
 __all__ = [
@@ -340,6 +341,10 @@ class WaterColumn:
         Solar zenith angle [deg].
     n_water : float
         Refractive index of the water [-].
+    phase : (mu (M,), p (W, M)) or None
+        The medium's phase function [-, sr⁻¹] (``oceanrender.optics.scene_water.water_phase_table``):
+        the four-flux coefficients are derived from it and the refracted sun
+        (:mod:`oceanrender.optics.streams`). None: the fixed closure (μ_d = 0.83, μ_u = 0.40).
     """
 
     wavelengths: NDArray[np.float64]
@@ -350,6 +355,7 @@ class WaterColumn:
     sky_irradiance: NDArray[np.float64]
     sun_zenith: float
     n_water: float
+    phase: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None
 
     @property
     def attenuation(self) -> NDArray[np.float64]:
@@ -421,12 +427,22 @@ def refract(directions: ArrayLike, normals: ArrayLike, eta: float) -> NDArray[np
     return np.where(sin2_t <= 1.0, t, np.nan)
 
 
+def column_coefficients(column: WaterColumn) -> StreamCoefficients | None:
+    """Four-flux coefficients of the column from its phase function and the refracted sun (None without a phase)."""
+    if column.phase is None:
+        return None
+    # NOTE: the in-water coefficients only; Q = π and the uniform-field r̄_wa stay, as Eq. 21 defines T0 and
+    # as over a shallow bright bottom (whose light reaches the surface nearly Lambertian) they should.
+    mu_w, _ = surface_light(column.sun_irradiance, column.sky_irradiance, column.sun_zenith, column.n_water)
+    return stream_coefficients(column.absorption, column.scattering, column.phase[0], column.phase[1], mu_w)
+
+
 def _column_light(column: WaterColumn, depths: NDArray, bottom_albedo: NDArray):
     """Four-flux E_upwell(0⁻) and E_bottom(H), each (D, W) [W m⁻² nm⁻¹], for depths (D,) [m]."""
     depth = np.where(np.isinf(depths), np.inf, np.maximum(depths, MIN_DEPTH_M))[:, None]
     light = four_flux(column.absorption, column.backscattering, column.sun_irradiance, column.sky_irradiance,
                       column.sun_zenith, depth, bottom_albedo, np.zeros(1), b=column.scattering,
-                      n_water=column.n_water, internal_reflection=True)
+                      n_water=column.n_water, internal_reflection=True, coefficients=column_coefficients(column))
     return light.E_upwell, light.E_bottom
 
 
