@@ -91,7 +91,9 @@ def main() -> int:
     meta = data["meta"]
     text = "\n".join([f"Monte Carlo: {meta['generator']} ({meta['variant']}, {meta['spp_per_pass']} paths × "
                       f"{meta['passes']} passes per depth, {meta['spp_per_pass_E_u']} for E_u; {meta['date']}, "
-                      f"{meta['seconds']} s). Errors: model/MC − 1.", ""] + lines + summary) + "\n"
+                      f"{meta['seconds']} s).{' ' + meta['recheck'] + '.' if 'recheck' in meta else ''} "
+                      "Errors: model/MC − 1.", ""]
+                     + lines + summary) + "\n"
     (ROOT / "docs" / "data" / "fourflux_agreement.md").write_text(text)
     print(text)
     plot(rows, ROOT / "docs" / "images" / "fourflux_agreement.png")
