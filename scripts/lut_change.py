@@ -3,8 +3,8 @@
 For each preset scene, the T0 table (Eq. 21: the water-leaving colour over a black bottom
 at depth h) is baked twice with the scene's own light and adaptation state: with today's
 fixed closure (μ_d = 0.83, μ_u = 0.40) and with the coefficients from the medium's phase
-function and the refracted sun (``oceanrender.optics.streams``). Printed: E_upwell(∞) at
-450/550/650 nm (new/old) and ΔE2000 between the two T0 colours at h = 2 m, 10 m and ∞.
+function and the refracted sun (``oceanrender.optics.streams``). Printed: T0's spectral radiance
+(``upwelling_radiance``) at h = ∞ and 450/550/650 nm (new/old) and ΔE2000 between the two T0 colours at h = 2 m, 10 m and ∞.
 
 Usage: ``.venv/bin/python scripts/lut_change.py`` (writes ``docs/data/lut_change.md``).
 """
@@ -33,7 +33,7 @@ def main() -> int:
 
     activate_variant("auto")
     depths = np.array([2.0, 10.0, np.inf])
-    lines = ["| scene | E_upwell(∞) new/old at 450, 550, 650 nm | ΔE2000 of T0 at h = 2 m, 10 m, ∞ |", "|---|---|---|"]
+    lines = ["| scene | T0's radiance at h = ∞, new/old, at 450, 550, 650 nm | ΔE2000 of T0 at h = 2 m, 10 m, ∞ |", "|---|---|---|"]
     for name in SCENES:
         scene = load_scene(ROOT / "scenes" / f"{name}.toml")
         settings = BakeSettings()

@@ -356,6 +356,7 @@ class WaterColumn:
     sun_zenith: float
     n_water: float
     phase: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None
+    _coefficients: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def attenuation(self) -> NDArray[np.float64]:
@@ -431,10 +432,14 @@ def column_coefficients(column: WaterColumn) -> StreamCoefficients | None:
     """Four-flux coefficients of the column from its phase function and the refracted sun (None without a phase)."""
     if column.phase is None:
         return None
-    # NOTE: the in-water coefficients only; Q = π and the uniform-field r̄_wa stay, as Eq. 21 defines T0 and
-    # as over a shallow bright bottom (whose light reaches the surface nearly Lambertian) they should.
-    mu_w, _ = surface_light(column.sun_irradiance, column.sky_irradiance, column.sun_zenith, column.n_water)
-    return stream_coefficients(column.absorption, column.scattering, column.phase[0], column.phase[1], mu_w)
+    # NOTE: the in-water coefficients, for E_upwell with a bottom and for E_bottom: the uniform-field r̄_wa
+    # stays there, as over a shallow bright bottom (whose light reaches the surface nearly Lambertian) it
+    # should; the water's own light gets the surface terms (_water_own_radiance). Derived once per column.
+    if "in water" not in column._coefficients:
+        mu_w, _ = surface_light(column.sun_irradiance, column.sky_irradiance, column.sun_zenith, column.n_water)
+        column._coefficients["in water"] = stream_coefficients(column.absorption, column.scattering,
+                                                               column.phase[0], column.phase[1], mu_w)
+    return column._coefficients["in water"]
 
 
 def _column_light(column: WaterColumn, depths: NDArray, bottom_albedo: NDArray):
@@ -444,6 +449,25 @@ def _column_light(column: WaterColumn, depths: NDArray, bottom_albedo: NDArray):
                       column.sun_zenith, depth, bottom_albedo, np.zeros(1), b=column.scattering,
                       n_water=column.n_water, internal_reflection=True, coefficients=column_coefficients(column))
     return light.E_upwell, light.E_bottom
+
+
+def _water_own_radiance(column: WaterColumn, depths: NDArray) -> NDArray[np.float64]:
+    """L_u(0⁻)/n² over a black bottom at ``depths`` (D, W) [W m⁻² sr⁻¹ nm⁻¹], with the surface terms.
+
+    The coefficients with Q, the surface's reflection of the actual upwelling and the beam source
+    refitted under the column's sky (:func:`oceanrender.optics.streams.stream_coefficients` with
+    ``n_water``): the model that agrees with the renderer's flat deep sea within 3 %.
+    """
+    if "surface" not in column._coefficients:
+        mu_w, sky = surface_light(column.sun_irradiance, column.sky_irradiance, column.sun_zenith, column.n_water)
+        column._coefficients["surface"] = stream_coefficients(column.absorption, column.scattering, column.phase[0],
+                                                              column.phase[1], mu_w, n_water=column.n_water, sky=sky)
+    co = column._coefficients["surface"]
+    depth = np.where(np.isinf(depths), np.inf, np.maximum(depths, MIN_DEPTH_M))[:, None]
+    light = four_flux(column.absorption, column.backscattering, column.sun_irradiance, column.sky_irradiance,
+                      column.sun_zenith, depth, 0.0, np.zeros(1), b=column.scattering, n_water=column.n_water,
+                      internal_reflection=True, coefficients=co)
+    return light.L_u / column.n_water**2
 
 
 def upwelling_radiance(column: WaterColumn, depths: ArrayLike, bottom_albedo: ArrayLike = 0.0
@@ -473,16 +497,26 @@ def upwelling_radiance(column: WaterColumn, depths: ArrayLike, bottom_albedo: Ar
     Notes
     -----
     The four-flux model (:func:`oceanrender.optics.fourflux.four_flux`) with
-    the beam attenuated by c = a + b, its forward part feeding the diffuse
-    stream, and internal reflection at the surface, as in ``oceanrender
-    optics``. Lambertian upwelling (Q = π) and the n² law give the radiance.
+    internal reflection at the surface, as in ``oceanrender optics``, and the n²
+    law. Without a phase function (``column.phase`` None): the fixed closure and
+    Lambertian upwelling (Q = π), Eq. 21 as the dissertation writes it. With one
+    (issue 19): the coefficients from the phase function; the water's own light
+    (over a black bottom) leaves with the upwelling's own Q and surface reflection
+    (3.6–5.8 sr, not π), and what a bottom of albedo R0 adds stays Lambertian (π).
     """
     depths = np.atleast_1d(np.asarray(depths, dtype=np.float64))
     if np.any(np.isnan(depths)) or np.any(depths < 0):
         raise ValueError("depths must be ≥ 0 [m] (inf for deep water)")
-    E_up, E_bottom = _column_light(column, depths, np.asarray(bottom_albedo, dtype=np.float64))
+    albedo = np.asarray(bottom_albedo, dtype=np.float64)
+    E_up, E_bottom = _column_light(column, depths, albedo)
     to_radiance = 1.0 / (np.pi * column.n_water**2)
-    return E_up * to_radiance, E_bottom * to_radiance  # Eq. 21 of [1], with the n² law
+    if column.phase is None:
+        return E_up * to_radiance, E_bottom * to_radiance  # Eq. 21 of [1], with the n² law
+    # The water's own light (black bottom) with the upwelling's own Q and surface reflection, as checked
+    # against the renderer (docs/optics.md, rendered vs model); what the bottom adds stays Lambertian (π).
+    E_black, _ = _column_light(column, depths, np.zeros_like(albedo))
+    water = _water_own_radiance(column, depths)
+    return water + (E_up - E_black) * to_radiance, E_bottom * to_radiance
 
 
 def bake_T0(column: WaterColumn, phi: VisionState, depth: Axis, bottom_albedo: ArrayLike = 0.0
