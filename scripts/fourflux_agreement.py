@@ -30,19 +30,12 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 
-def first_optical_depth_K(z, E, E0) -> float:
-    """1/z₁ from a quadratic of ln E_d in z through the metered depths [m⁻¹]."""
-    coeffs = np.polyfit(z, np.log(E), 2)
-    roots = np.roots(coeffs - np.array([0.0, 0.0, math.log(E0) - 1.0]))
-    real = roots[np.isreal(roots)].real
-    return float(1.0 / real[np.argmin(np.abs(real - z[1]))])
-
-
 def compare(record) -> dict:
     """Monte Carlo, old, new and discrete-ordinate K_1, K_10, R of one cell."""
     from oceanrender.optics.components import tabulated_fournier_forand
     from oceanrender.optics.fourflux import four_flux
     from oceanrender.optics.streams import deep_layer, first_optical_depth, legendre_moments, stream_coefficients
+    from oceanrender.render.slab import first_optical_depth_K
 
     a, b, bb, theta = record["a_per_m"], record["b_per_m"], record["bb_per_m"], record["zenith_in_water_deg"]
     z = np.array(record["z_m"])

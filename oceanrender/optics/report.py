@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .fourflux import FourFluxResult, four_flux
-from .streams import stream_coefficients, surface_light
+from .streams import sunlit_coefficients
 
 #: Wavelength grid of the report [nm] (95 wavelengths).
 REPORT_WAVELENGTHS = np.arange(360.0, 831.0, 5.0)
@@ -59,8 +59,7 @@ def scene_optics(a: np.ndarray, b: np.ndarray, bb: np.ndarray, direct_normal: np
     """
     coefficients = None
     if phase is not None:
-        mu_w, sky = surface_light(direct_normal, diffuse, sun_zenith, n_water)
-        coefficients = stream_coefficients(a, b, phase[0], phase[1], mu_w, n_water=n_water, sky=sky)
+        coefficients = sunlit_coefficients(a, b, *phase, direct_normal, diffuse, sun_zenith, n_water)
     light = four_flux(a, bb, direct_normal, diffuse, sun_zenith, depth, bottom_albedo, z, b=b,
                       n_water=n_water, internal_reflection=True, coefficients=coefficients)
     return SceneOptics(wavelengths, a, b, bb, direct_normal, diffuse, float(sun_zenith), float(depth), light)
@@ -86,8 +85,7 @@ def nadir_water_leaving(optics, wavelengths: np.ndarray, direct_normal: np.ndarr
     mu, p = medium_phase_table(optics, wl)
     # b_b of the table itself (trapezoids; the half-node at μ = 0 matters < 1 % here)
     bb = b * np.array([np.trapezoid(row[mu <= 0], mu[mu <= 0]) / np.trapezoid(row, mu) for row in p])
-    mu_w, sky = surface_light(direct_normal, diffuse, sun_zenith, n_water)
-    coefficients = stream_coefficients(a, b, mu, p, mu_w, n_water=n_water, sky=sky)
+    coefficients = sunlit_coefficients(a, b, mu, p, direct_normal, diffuse, sun_zenith, n_water)
     common = dict(b=b, n_water=n_water, internal_reflection=True, view_zenith=0.0)
     before = four_flux(a, bb, direct_normal, diffuse, sun_zenith, np.inf, 0.0, [0.0], **common)
     after = four_flux(a, bb, direct_normal, diffuse, sun_zenith, np.inf, 0.0, [0.0], coefficients=coefficients,

@@ -84,6 +84,7 @@ __all__ = [
     "legendre_moments",
     "stream_block",
     "stream_coefficients",
+    "sunlit_coefficients",
     "surface_light",
 ]
 
@@ -185,11 +186,6 @@ class DeepLayer:
     def E_u0(self) -> float:
         """E_u(0⁻) per unit normal irradiance of the beam [-]."""
         return float(self._amp @ self._up + self._particular[1])
-
-    @property
-    def asymptotic_amplitude(self) -> float:
-        """Coefficient of e^{−K_∞ z} in E_d(z) [-]."""
-        return float(self._amp[self._slowest] * self._down[self._slowest])
 
 
 def deep_layer(a: float, b: float, moments: ArrayLike, mu_w: float, n: int = N_STREAMS, *,
@@ -384,6 +380,14 @@ def surface_light(sun_irradiance: ArrayLike, sky_irradiance: ArrayLike, sun_zeni
     beam = np.asarray(sun_irradiance, dtype=float) * mu_s * (1.0 - reflectance_Fresnel(mu_s, N_AIR, n_water)) / mu_w
     sky = np.asarray(sky_irradiance, dtype=float)
     return mu_w, np.divide(sky, beam, out=np.zeros(np.broadcast(sky, beam).shape), where=beam > 0)
+
+
+def sunlit_coefficients(a: ArrayLike, b: ArrayLike, mu: ArrayLike, p: ArrayLike, sun_irradiance: ArrayLike,
+                        sky_irradiance: ArrayLike, sun_zenith: float, n_water: float) -> StreamCoefficients:
+    """:func:`stream_coefficients` with the surface terms, for a sun [direct-normal, W m⁻² nm⁻¹] at
+    ``sun_zenith`` [deg] and a sky [horizontal, W m⁻² nm⁻¹] above water of index ``n_water``."""
+    mu_w, sky = surface_light(sun_irradiance, sky_irradiance, sun_zenith, n_water)
+    return stream_coefficients(a, b, mu, p, mu_w, n_water=n_water, sky=sky)
 
 
 def stream_coefficients(a: ArrayLike, b: ArrayLike, mu: ArrayLike, p: ArrayLike, mu_w: float,

@@ -66,8 +66,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..optics.fourflux import four_flux
-from ..optics.fresnel import N_AIR, fresnel_correction, reflectance_Fresnel
-from ..optics.streams import StreamCoefficients, stream_coefficients, surface_light
+from ..optics.fresnel import N_AIR, fresnel_correction, reflectance_Fresnel, refracted_cosine
+from ..optics.streams import StreamCoefficients, stream_coefficients, sunlit_coefficients
 from ..vision.model import VisionModel
 
 __all__ = [
@@ -436,7 +436,7 @@ def column_coefficients(column: WaterColumn) -> StreamCoefficients | None:
     # stays there, as over a shallow bright bottom (whose light reaches the surface nearly Lambertian) it
     # should; the water's own light gets the surface terms (_water_own_radiance). Derived once per column.
     if "in water" not in column._coefficients:
-        mu_w, _ = surface_light(column.sun_irradiance, column.sky_irradiance, column.sun_zenith, column.n_water)
+        mu_w = float(refracted_cosine(math.cos(math.radians(column.sun_zenith)), N_AIR, column.n_water))
         column._coefficients["in water"] = stream_coefficients(column.absorption, column.scattering,
                                                                column.phase[0], column.phase[1], mu_w)
     return column._coefficients["in water"]
@@ -455,13 +455,12 @@ def _water_own_radiance(column: WaterColumn, depths: NDArray) -> NDArray[np.floa
     """L_u(0⁻)/n² over a black bottom at ``depths`` (D, W) [W m⁻² sr⁻¹ nm⁻¹], with the surface terms.
 
     The coefficients with Q, the surface's reflection of the actual upwelling and the beam source
-    refitted under the column's sky (:func:`oceanrender.optics.streams.stream_coefficients` with
-    ``n_water``): the model that agrees with the renderer's flat deep sea within 3 %.
+    refitted under the column's sky (:func:`oceanrender.optics.streams.sunlit_coefficients`): the model that agrees with the renderer's flat deep sea within 3 %.
     """
     if "surface" not in column._coefficients:
-        mu_w, sky = surface_light(column.sun_irradiance, column.sky_irradiance, column.sun_zenith, column.n_water)
-        column._coefficients["surface"] = stream_coefficients(column.absorption, column.scattering, column.phase[0],
-                                                              column.phase[1], mu_w, n_water=column.n_water, sky=sky)
+        column._coefficients["surface"] = sunlit_coefficients(
+            column.absorption, column.scattering, *column.phase, column.sun_irradiance, column.sky_irradiance,
+            column.sun_zenith, column.n_water)
     co = column._coefficients["surface"]
     depth = np.where(np.isinf(depths), np.inf, np.maximum(depths, MIN_DEPTH_M))[:, None]
     light = four_flux(column.absorption, column.backscattering, column.sun_irradiance, column.sky_irradiance,

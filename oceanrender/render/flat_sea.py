@@ -50,6 +50,16 @@ def _band_film(wavelengths: np.ndarray, half_width: float) -> dict:
     return film
 
 
+def _integrator(scene: Scene, lobes: str = "both") -> dict:
+    """The scene's integrator and path depth; ``split`` with its in-water sun sampling over the α of the flat sea."""
+    kind = scene.render.integrator
+    sampling = {}
+    if kind == "split":
+        sampling = {"sun": sun_direction(scene.sun.elevation, scene.sun.azimuth), "water_ior": scene.water.ior,
+                    "sun_lobe_alpha": FLAT_ALPHA, "lobes": lobes}
+    return volumetric_integrator(kind, scene.render.max_depth, rr_depth=scene.render.roulette_depth, **sampling)
+
+
 def flat_sea_scene(scene: Scene, optics, wavelengths: np.ndarray, half_width: float, spp: int) -> dict:
     """The Mitsuba scene dict of the flat sea (module docstring); sensor 0 looks down, sensor 1 up."""
     import mitsuba as mi  # noqa: PLC0415
@@ -59,15 +69,11 @@ def flat_sea_scene(scene: Scene, optics, wavelengths: np.ndarray, half_width: fl
     register()
     register_tabulated()
     T = mi.ScalarTransform4f
-    sun = sun_direction(scene.sun.elevation, scene.sun.azimuth)
-    kind = scene.render.integrator
-    sampling = {"sun": sun, "water_ior": scene.water.ior, "sun_lobe_alpha": FLAT_ALPHA} if kind == "split" else {}
     film = _band_film(wavelengths, half_width)
     meter = {"type": "radiancemeter", "film": film, "sampler": {"type": "independent", "sample_count": spp}}
     return {
         "type": "scene",
-        "integrator": volumetric_integrator(kind, scene.render.max_depth, rr_depth=scene.render.roulette_depth,
-                                            **sampling),
+        "integrator": _integrator(scene),
         "sky": sunsky_emitter(scene.sun),
         "water": {"type": "cube", "bsdf": water_surface_bsdf(scene.water.ior, FLAT_ALPHA),
                   "interior": water_medium(optics),
@@ -98,10 +104,7 @@ def flat_sea_radiance(scene: Scene, optics, wavelengths, half_width: float = 2.5
         raise ValueError("flat_sea_radiance: needs the 'split' integrator (its transmission lobe is L_w)")
     wavelengths = np.asarray(wavelengths, dtype=float)
     loaded = mi.load_dict(flat_sea_scene(scene, optics, wavelengths, half_width, spp))
-    sun = sun_direction(scene.sun.elevation, scene.sun.azimuth)
-    transmission = mi.load_dict(volumetric_integrator(
-        "split", scene.render.max_depth, rr_depth=scene.render.roulette_depth, sun=sun, water_ior=scene.water.ior,
-        sun_lobe_alpha=FLAT_ALPHA, lobes="transmission"))
+    transmission = mi.load_dict(_integrator(scene, lobes="transmission"))
     width = 2.0 * half_width
     down = np.array([np.array(mi.render(loaded, sensor=0, integrator=transmission, seed=seed + 1000 * k,
                                         spp=spp)).ravel() for k in range(passes)]) / width  # L_w: the transmission lobe

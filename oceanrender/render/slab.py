@@ -54,7 +54,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SlabLight", "slab_light_field"]
+__all__ = ["SlabLight", "first_optical_depth_K", "slab_light_field"]
 
 _BAND_NM = (540.0, 560.0)
 _HALF_WIDTH_M = 5000.0
@@ -172,3 +172,16 @@ def slab_light_field(a: float, b: float, phase: tuple[np.ndarray, np.ndarray], z
     error = values.std(axis=0, ddof=1) / math.sqrt(passes)
     return SlabLight(z=depths, E_d=mean[:-1], E_d_error=error[:-1], E_u0=float(mean[-1]),
                      E_u0_error=float(error[-1]), E_d0=mu_w)
+
+
+def first_optical_depth_K(z, E_d, E_d0: float) -> float:
+    """K_d over the first optical depth, 1/z₁ with ln E_d(z₁) = ln E_d(0) − 1 [m⁻¹] (Gordon 1989).
+
+    From metered depths z (three around z₁) [m] and their E_d: a quadratic of ln E_d in z, its root
+    nearest the middle depth.
+    """
+    z = np.asarray(z, dtype=float)
+    coeffs = np.polyfit(z, np.log(np.asarray(E_d, dtype=float)), 2)
+    roots = np.roots(coeffs - np.array([0.0, 0.0, math.log(E_d0) - 1.0]))
+    real = roots[np.isreal(roots)].real
+    return float(1.0 / real[np.argmin(np.abs(real - z[1]))])

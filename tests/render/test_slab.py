@@ -14,7 +14,7 @@ import pytest
 from oceanrender.optics.components import tabulated_fournier_forand
 from oceanrender.optics.fourflux import four_flux
 from oceanrender.optics.streams import deep_layer, legendre_moments, stream_coefficients
-from oceanrender.render.slab import slab_light_field
+from oceanrender.render.slab import first_optical_depth_K, slab_light_field
 from tests.chandrasekhar import h_function
 
 pytestmark = pytest.mark.render
@@ -42,14 +42,6 @@ def test_isotropic_half_space_albedo_matches_chandrasekhar(variant):
     assert abs(light.R - exact) <= 5 * light.E_u0_error + 5e-3 * exact
 
 
-def _first_optical_depth_K(z, E, E0):
-    """1/z₁ with ln E_d = ln E0 − 1, quadratic in z through the three measured depths."""
-    coeffs = np.polyfit(z, np.log(E), 2)
-    roots = np.roots(coeffs - np.array([0.0, 0.0, math.log(E0) - 1.0]))
-    real = roots[np.isreal(roots)].real
-    return 1.0 / real[np.argmin(np.abs(real - z[1]))]
-
-
 @pytest.mark.parametrize(("bb_over_a", "omega", "zenith_air"), [(1.0, 0.95, 0.0), (0.1, 0.8, 60.0)])
 def test_four_flux_from_the_phase_function_agrees_with_monte_carlo(variant, bb_over_a, omega, zenith_air):
     """K_d over the first optical depth and R(0⁻) within 5 % (the issue's goal) of the Mitsuba slab
@@ -66,7 +58,7 @@ def test_four_flux_from_the_phase_function_agrees_with_monte_carlo(variant, bb_o
     z = z1 * np.array([0.85, 1.0, 1.15])
     light = slab_light_field(a, b, (mu, p), theta_w, z, spp=16384, passes=3, spp_up=32768, seed=5)
     assert np.all(light.E_d_error <= 0.01 * light.E_d) and light.E_u0_error <= 0.01 * light.E_u0
-    K_mc = _first_optical_depth_K(z, light.E_d, light.E_d0)
+    K_mc = first_optical_depth_K(z, light.E_d, light.E_d0)
     model = four_flux([a], [bb], 1.0, 0.0, theta_w, np.inf, 0.0, [0.0], b=[b], n_water=1.0,
                       coefficients=stream_coefficients([a], [b], mu, p[None], mu_w))
     assert float(model.K_d[0]) == pytest.approx(K_mc, rel=0.05)
