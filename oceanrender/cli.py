@@ -514,7 +514,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     from .optics.report import REPORT_WAVELENGTHS, scene_optics  # noqa: PLC0415
     from .render.irradiance import sky_irradiance_spectra  # noqa: PLC0415
     from .optics.water import pure_seawater_iops  # noqa: PLC0415
-    from .optics.scene_water import water_composition, water_phase_table  # noqa: PLC0415
+    from .optics.scene_water import water_composition, water_ior, water_phase_table  # noqa: PLC0415
 
     wavelengths = REPORT_WAVELENGTHS
     composition = water_composition(scene)
@@ -535,7 +535,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     direct, diffuse = sky_irradiance_spectra(scene.sun, wavelengths, spp=scene.render.white_spp)
     depth = scene.water.depth
     z = np.linspace(0.0, min(depth, 100.0), 101)
-    report = scene_optics(a, b, bb, direct, diffuse, 90.0 - scene.sun.elevation, depth, z, n_water=scene.water.ior,
+    report = scene_optics(a, b, bb, direct, diffuse, 90.0 - scene.sun.elevation, depth, z, n_water=water_ior(scene),
                           phase=water_phase_table(scene, wavelengths))
     metadata = {"scene": scene.name, "variant": runtime.variant, "oceanrender_version": __version__,
                 "composition": None if composition is None else composition.__dict__,
@@ -646,6 +646,7 @@ def cmd_reference(args: argparse.Namespace) -> int:
         write_report,
     )
     from .realtime.gamma_fit import fit_gamma, fit_view  # noqa: PLC0415
+    from .optics.scene_water import water_ior  # noqa: PLC0415
     from .realtime.reference import compare_frame, reference_noise, reference_report, vision_state  # noqa: PLC0415
 
     scene = _realtime_scene(args)
@@ -694,7 +695,7 @@ def cmd_reference(args: argparse.Namespace) -> int:
         comparisons[frame] = comparison = compare_frame(xyz, gbuffer, luts, phi)
         write_comparison(out, frame, xyz, comparison, gbuffer, renderer.camera, geometry, renderer.faces,
                          {**identity, "frame": frame, "time_s": frame / scene.output.fps, "repaired_pixels": repaired,
-                          "n_water": scene.water.ior})
+                          "n_water": water_ior(scene)})
         print(f"frame {frame}: dE2000 water mean {comparison.water.mean:.2f}, p95 {comparison.water.p95:.2f}, "
               f"max {comparison.water.max:.2f} (gamma {luts.gamma:g})", flush=True)
 

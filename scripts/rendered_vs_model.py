@@ -44,7 +44,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
 
     from oceanrender.optics.report import nadir_water_leaving
-    from oceanrender.optics.scene_water import water_optics
+    from oceanrender.optics.scene_water import water_ior, water_optics
     from oceanrender.render.flat_sea import flat_sea_radiance
     from oceanrender.render.irradiance import sky_irradiance_spectra
     from oceanrender.runtime.variants import activate_variant
@@ -64,7 +64,7 @@ def main(argv=None) -> int:
         # NOTE: 2^18 samples: at the scene's white_spp (1024) these band irradiances carry ±5-10 % noise
         direct, diffuse = sky_irradiance_spectra(scene.sun, WAVELENGTHS, spp=1 << 18)
         old, new, co = nadir_water_leaving(optics, WAVELENGTHS, direct, diffuse, 90.0 - scene.sun.elevation,
-                                           scene.water.ior)
+                                           water_ior(scene))
         results[name] = (rendered, old, new)
         for i, w in enumerate(WAVELENGTHS):
             L = rendered.water_leaving[i]

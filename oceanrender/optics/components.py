@@ -31,10 +31,13 @@ from typing import Mapping
 import numpy as np
 
 from .tables import VISIBLE_RANGE_NM, SpectralDataError, read_spectral_table
-from .water import MediumOptics, WaterIOPs, pure_seawater_iops
-
-#: Salinity of ``spectra/pure_seawater.csv`` [PSU] (see its header).
-TABLE_SALINITY_PSU = 35.0
+from .water import (
+    TABLE_SALINITY_PSU,
+    MediumOptics,
+    WaterIOPs,
+    pure_seawater_iops,
+    seawater_scattering_salinity_factor,
+)
 
 #: Backscattering ratio b_bp/b_p of phytoplankton-dominated particles [-]:
 #: ≈ 0.01 for organic particles of low relative index (Twardowski et al. 2001,
@@ -533,7 +536,7 @@ def composition_iops(composition: WaterComposition, wavelengths_nm) -> Compositi
                                 "no extrapolation")
     c = composition
     water = _water_table()
-    salinity_factor = (1.0 + 0.3 * c.salinity_psu / 37.0) / (1.0 + 0.3 * TABLE_SALINITY_PSU / 37.0)  # Morel 1974
+    salinity_factor = seawater_scattering_salinity_factor(c.salinity_psu, TABLE_SALINITY_PSU)  # Morel 1974
     b_w = np.interp(wl, water.wavelengths, water.scattering) * salinity_factor
     zero = np.zeros_like(wl)
     parts = {

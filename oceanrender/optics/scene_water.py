@@ -7,8 +7,35 @@ ask here.
 
 from __future__ import annotations
 
+import dataclasses
+
 from ..scene import Scene
-from .water import MediumOptics, WaterIOPs, pure_seawater_iops
+from .water import (
+    DEFAULT_IOR,
+    DEFAULT_SALINITY_PSU,
+    DEFAULT_TEMPERATURE_C,
+    IOR_WAVELENGTH_NM,
+    PURE_SEAWATER_TABLE,
+    TABLE_SALINITY_PSU,
+    MediumOptics,
+    WaterIOPs,
+    pure_seawater_iops,
+    seawater_refractive_index,
+    seawater_scattering_salinity_factor,
+)
+
+
+def water_ior(scene: Scene) -> float:
+    """The water's refractive index [-]: ``[water] ior``; else n(550 nm, T, S) of Quan & Fry (1995)
+    when ``temperature`` or ``salinity`` is given (the other at 20 °C / 35 PSU); else 1.333."""
+    w = scene.water
+    if w.ior is not None:
+        return float(w.ior)
+    if w.temperature is None and w.salinity is None:
+        return DEFAULT_IOR
+    t = DEFAULT_TEMPERATURE_C if w.temperature is None else w.temperature
+    s = DEFAULT_SALINITY_PSU if w.salinity is None else w.salinity
+    return float(seawater_refractive_index(IOR_WAVELENGTH_NM, t, s))
 
 
 def water_composition(scene: Scene):
@@ -21,7 +48,9 @@ def water_composition(scene: Scene):
     settings.pop("particle_phase")  # a property of the medium's phase model, not of the water (water_optics)
     base = preset(settings.pop("preset")) if scene.composition.preset else WaterComposition()
     explicit = {key: value for key, value in settings.items() if value is not None}
-    return WaterComposition(**{**base.__dict__, **explicit})
+    state = {"temperature_c": scene.water.temperature, "salinity_psu": scene.water.salinity}
+    explicit.update({key: value for key, value in state.items() if value is not None})
+    return dataclasses.replace(base, **explicit)
 
 
 def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
@@ -32,7 +61,12 @@ def water_optics(scene: Scene) -> WaterIOPs | MediumOptics:
         return jerlov_type_optics(scene.water.jerlov_type)
     composition = water_composition(scene)
     if composition is None:
-        return pure_seawater_iops(scene.water.iop_table)
+        iops = pure_seawater_iops(scene.water.iop_table)
+        if scene.water.salinity is None or scene.water.iop_table != PURE_SEAWATER_TABLE:
+            return iops  # a table of the user's own: its b is what the user measured
+        factor = seawater_scattering_salinity_factor(scene.water.salinity, TABLE_SALINITY_PSU)
+        return dataclasses.replace(iops, scattering=iops.scattering * factor,
+                                   source=f"{iops.source}\nb scaled to {scene.water.salinity:g} PSU (Morel 1974)")
     from .components import composition_optics  # noqa: PLC0415
 
     return composition_optics(composition, particle_phase=scene.composition.particle_phase)

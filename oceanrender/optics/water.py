@@ -1,7 +1,8 @@
 """Inherent optical properties (IOPs) of the water body.
 
-Issue-2 scope: pure sea water only (absorption a_w and scattering b_sw from
-``spectra/pure_seawater.csv``). Coefficients in m⁻¹, wavelengths in nm.
+Pure sea water: absorption a_w and scattering b_sw from ``spectra/pure_seawater.csv``,
+the salinity change of b_sw, and the refractive index n(λ, T, S). Coefficients in m⁻¹,
+wavelengths in nm, temperature in °C, salinity in PSU.
 """
 
 from __future__ import annotations
@@ -11,6 +12,90 @@ from dataclasses import dataclass
 import numpy as np
 
 from .tables import SpectralDataError, read_spectral_table
+
+
+#: Wavelength at which the water's single refractive index is taken [nm]: the middle of the
+#: visible; n varies by ±0.3 % over 400-700 nm (dispersion is not rendered).
+IOR_WAVELENGTH_NM = 550.0
+
+#: Refractive index of water when neither it nor the temperature or salinity is given [-]:
+#: fresh water at 20 °C and 589 nm (Mitsuba's ``"water"``).
+DEFAULT_IOR = 1.333
+
+#: The default pure-water table in ``spectra/`` and its salinity [PSU] (see its header).
+PURE_SEAWATER_TABLE = "pure_seawater.csv"
+TABLE_SALINITY_PSU = 35.0
+
+#: Ranges accepted for the water's state: temperature [°C] and salinity [PSU].
+TEMPERATURE_RANGE_C = (-2.0, 40.0)
+SALINITY_RANGE_PSU = (0.0, 42.0)
+#: Temperature and salinity taken for the one of the two left out [°C, PSU].
+DEFAULT_TEMPERATURE_C = 20.0
+DEFAULT_SALINITY_PSU = 35.0
+
+
+def _check_state(temperature_c: float, salinity_psu: float) -> tuple[float, float]:
+    t, s = float(temperature_c), float(salinity_psu)
+    for name, value, (lo, hi), unit in (("temperature_c", t, TEMPERATURE_RANGE_C, "°C"),
+                                        ("salinity_psu", s, SALINITY_RANGE_PSU, "PSU")):
+        if not lo <= value <= hi:
+            raise ValueError(f"{name}: expected {lo:g} to {hi:g} {unit}, got {value!r}")
+    return t, s
+
+
+def seawater_refractive_index(wavelength_nm, temperature_c: float = DEFAULT_TEMPERATURE_C,
+                              salinity_psu: float = DEFAULT_SALINITY_PSU) -> np.ndarray:
+    """Real refractive index of sea water n(λ, T, S) [-] (Quan & Fry 1995).
+
+    n = n0 + (n1 + n2 T + n3 T²) S + n4 T² + (n5 + n6 S + n7 T)/λ + n8/λ² + n9/λ³,
+    λ in nm, T in °C, S in PSU, with n0 = 1.31405, n1 = 1.779e-4, n2 = −1.05e-6,
+    n3 = 1.6e-8, n4 = −2.02e-6, n5 = 15.868, n6 = 0.01155, n7 = −0.00423,
+    n8 = −4382, n9 = 1.1455e6 — the paper's one fitted equation, to the data of
+    Austin & Halikas (1976), 400-700 nm, 0-30 °C, 0-35 PSU.
+
+    Parameters
+    ----------
+    wavelength_nm : array_like   Vacuum wavelength [nm], 360-830 (the fit's range is 400-700).
+    temperature_c : float        Temperature [°C], −2 to 40 (beyond 0-30: extrapolated).
+    salinity_psu : float         Salinity [PSU], 0 to 42 (beyond 35: extrapolated).
+
+    Returns
+    -------
+    ndarray   n [-], at 1 atm.
+
+    Notes
+    -----
+    Against Daimon & Masumura (2007) distilled water at 19-24 °C the fit is 3.3-3.7e-4
+    lower at every wavelength (their absolute scale differs from Austin & Halikas'); the
+    dispersion and the temperature change agree within 3e-5 (``tests/optics/test_water.py``).
+
+    References
+    ----------
+    .. [1] Quan, X. & Fry, E. S. (1995), "Empirical equation for the index of refraction
+       of seawater", Appl. Opt. 34, 3477-3480, doi:10.1364/AO.34.003477.
+    """
+    t, s = _check_state(temperature_c, salinity_psu)
+    wl = np.asarray(wavelength_nm, dtype=float)
+    if not np.all((wl >= 360.0) & (wl <= 830.0)):
+        raise ValueError(f"wavelength_nm: expected 360 to 830 nm, got {np.min(wl):g} to {np.max(wl):g}")
+    return (1.31405 + (1.779e-4 - 1.05e-6 * t + 1.6e-8 * t * t) * s - 2.02e-6 * t * t  # [1]
+            + (15.868 + 0.01155 * s - 0.00423 * t) / wl - 4382.0 / wl**2 + 1.1455e6 / wl**3)
+
+
+def seawater_scattering_salinity_factor(salinity_psu: float, table_salinity_psu: float) -> float:
+    """b_sw(S) / b_sw(S_table) [-]: molecular scattering of sea water against salinity.
+
+    b_sw ∝ 1 + 0.3 S / 37 (Morel 1974: sea water of 35-39 PSU scatters 30 % more than
+    pure water), the form ``jerlov.pure_water_scattering`` uses. S in PSU.
+
+    References
+    ----------
+    .. [1] Morel, A. (1974), "Optical properties of pure water and pure sea water", in
+       Optical Aspects of Oceanography, Academic Press, pp. 1-24.
+    """
+    _check_state(DEFAULT_TEMPERATURE_C, salinity_psu)
+    _check_state(DEFAULT_TEMPERATURE_C, table_salinity_psu)
+    return (1.0 + 0.3 * salinity_psu / 37.0) / (1.0 + 0.3 * table_salinity_psu / 37.0)  # [1]
 
 
 @dataclass(frozen=True)
@@ -56,7 +141,7 @@ def check_iop_values(table: str, absorption: np.ndarray, scattering: np.ndarray)
                                 f"got {scattering.min():g} to {scattering.max():g}")
 
 
-def pure_seawater_iops(table: str = "pure_seawater.csv") -> WaterIOPs:
+def pure_seawater_iops(table: str = PURE_SEAWATER_TABLE) -> WaterIOPs:
     """IOPs of pure sea water from a table in ``spectra/`` [m⁻¹].
 
     The default table is Williamson & Hollins (2022) absorption with

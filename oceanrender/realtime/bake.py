@@ -23,6 +23,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..optics.report import REPORT_WAVELENGTHS
+from ..optics.scene_water import water_ior
 from ..optics.seafloor import linear_reflectance
 from ..render.scene import sun_direction
 from ..scene import Scene
@@ -239,7 +240,7 @@ def water_column(scene: Scene, light: SceneLight) -> WaterColumn:
     return WaterColumn(wavelengths=light.wavelengths, absorption=np.asarray(a, float), scattering=np.asarray(b, float),
                        backscattering=np.asarray(bb, float), sun_irradiance=light.sun_irradiance,
                        sky_irradiance=light.sky_irradiance, sun_zenith=90.0 - scene.sun.elevation,
-                       n_water=scene.water.ior, phase=water_phase_table(scene, light.wavelengths))
+                       n_water=water_ior(scene), phase=water_phase_table(scene, light.wavelengths))
 
 
 def reference_albedo(scene: Scene, settings: BakeSettings) -> tuple[float, float]:
@@ -307,7 +308,7 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
 
     common = {"scene": scene.name, "wavelengths_nm": [float(wl[0]), float(wl[-1]), float(wl[1] - wl[0])],
               "vision": {**phi.describe(), "adaptation_source": adaptation_source},
-              "sun": scene.sun.model_dump(), "n_water": scene.water.ior, "settings": settings.describe()}
+              "sun": scene.sun.model_dump(), "n_water": water_ior(scene), "settings": settings.describe()}
     optics = {"iops": "oceanrender.realtime.bake.scene_iops (as `oceanrender optics`)",
               "four_flux": {"coefficients": "oceanrender.optics.streams: from the medium's phase function and the "
                                             "refracted sun (delta-M discrete ordinates; asymptotic diffuse block, "
@@ -319,7 +320,7 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
 
     T0 = bake_T0(column, phi, depth, R0)
     T1 = bake_T1(column, phi, depth, path, linear_reflectance(wl, floor_pair))
-    fresnel = bake_fresnel(cosine, scene.water.ior, settings.gamma)
+    fresnel = bake_fresnel(cosine, water_ior(scene), settings.gamma)
     sky = bake_sky(light.sky_radiance, wl, phi)
     luts = {
         "T0": Lut("T0", T0[None].astype(np.float32), ("R", "G", "B"), depth, None,
@@ -331,7 +332,7 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
                   f"T_refr = T0(h) + T1(h, l) * (R - R0) with R, R0 albedos in display RGB (Eq. 22); {COLOUR_UNIT}",
                   "sRGB", {**common, "optics": optics}),
         "fresnel": Lut("fresnel", fresnel[None].astype(np.float32), ("R", "G"), cosine, None,
-                       f"R: exact unpolarised Fresnel reflectance F(mu) air -> water (n = {scene.water.ior:g}); "
+                       f"R: exact unpolarised Fresnel reflectance F(mu) air -> water (n = {water_ior(scene):g}); "
                        f"G: F^gamma with gamma = {settings.gamma:g} (Eq. 20) [-]", "linear",
                        {**common, "gamma": settings.gamma}),
         "sky": Lut("sky", sky.astype(np.float32), ("R", "G", "B"), None, None,
@@ -410,7 +411,7 @@ def _ripple_luts(scene: Scene, settings: BakeSettings, spectrum, common: dict) -
     """The ripple normal map and perturbation map of the waves finer than the scene's geometry."""
     finest = finest_cell(scene)
     k_min = np.pi / finest  # the Nyquist wavenumber of the geometry (as the surface roughness)
-    maps = bake_ripples(spectrum, settings.ripple_patch, settings.ripple_texels, k_min, scene.water.ior,
+    maps = bake_ripples(spectrum, settings.ripple_patch, settings.ripple_texels, k_min, water_ior(scene),
                         settings.ripple_seed)
     limit = float(np.max(np.abs(maps.offsets))) or 1.0
     tile = {"patch_size_m": maps.patch_size, "texels": settings.ripple_texels,

@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from ..optics.scene_water import water_ior
 from ..pipeline import Sequence, adaptation_luminance, vision_for_scene
 from ..scene import Scene
 from ..surface.open_sea import FrameGeometry
@@ -92,7 +93,7 @@ class ReferenceRenderer:
         """The frame's G-buffer, cast into the same scene the reference was rendered from."""
         self.load(frame)
         bottom = "terrain" if self.scene.coastal is not None else None
-        return trace_gbuffer(self.sequence.renderer.scene, self.camera, self.scene.water.ior, bottom_id=bottom)
+        return trace_gbuffer(self.sequence.renderer.scene, self.camera, water_ior(self.scene), bottom_id=bottom)
 
 
 def scene_adaptation(scene: Scene, reference_xyz: NDArray, white_XYZ: NDArray) -> tuple[float, str]:

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..optics.scene_water import water_ior
 from ..scene import Scene
 from .scene import sun_direction, sunsky_emitter, volumetric_integrator, water_medium, water_surface_bsdf
 
@@ -55,7 +56,7 @@ def _integrator(scene: Scene, lobes: str = "both") -> dict:
     kind = scene.render.integrator
     sampling = {}
     if kind == "split":
-        sampling = {"sun": sun_direction(scene.sun.elevation, scene.sun.azimuth), "water_ior": scene.water.ior,
+        sampling = {"sun": sun_direction(scene.sun.elevation, scene.sun.azimuth), "water_ior": water_ior(scene),
                     "sun_lobe_alpha": FLAT_ALPHA, "lobes": lobes}
     return volumetric_integrator(kind, scene.render.max_depth, rr_depth=scene.render.roulette_depth, **sampling)
 
@@ -75,7 +76,7 @@ def flat_sea_scene(scene: Scene, optics, wavelengths: np.ndarray, half_width: fl
         "type": "scene",
         "integrator": _integrator(scene),
         "sky": sunsky_emitter(scene.sun),
-        "water": {"type": "cube", "bsdf": water_surface_bsdf(scene.water.ior, FLAT_ALPHA),
+        "water": {"type": "cube", "bsdf": water_surface_bsdf(water_ior(scene), FLAT_ALPHA),
                   "interior": water_medium(optics),
                   "to_world": T().translate([0.0, 0.0, -500.0]).scale([2000.0, 2000.0, 500.0])},
         # NOTE: off the origin, where the two triangles of the cube's top meet (a ray through their

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..optics.foam import foam_spectral_factor_Frouin1996
+from ..optics.scene_water import water_ior
 from ..optics.seafloor import linear_reflectance
 from ..optics.water import MediumOptics, WaterIOPs
 from ..scene import Scene
@@ -268,14 +269,14 @@ class WaterRenderer:
         import mitsuba as mi  # noqa: PLC0415
 
         width, height = resolution or settings.output.resolution
-        bsdf = water_surface_bsdf(settings.water.ior, roughness, per_vertex=geometry.roughness is not None)
+        bsdf = water_surface_bsdf(water_ior(settings), roughness, per_vertex=geometry.roughness is not None)
         if geometry.foam is not None:
             bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
         mesh = water_mesh(faces, geometry, bsdf, water_medium(iops))
         sun_sampling = {}
         if settings.render.sun_sampling and sun_lobe_alpha is not None:
             sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
-                            "water_ior": settings.water.ior, "sun_lobe_alpha": float(sun_lobe_alpha),
+                            "water_ior": water_ior(settings), "sun_lobe_alpha": float(sun_lobe_alpha),
                             "in_water_clamp": float(in_water_clamp)}
         render = settings.render
         two_pass = render.integrator == "split" and render.in_water_fraction < 1.0

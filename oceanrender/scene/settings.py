@@ -248,8 +248,14 @@ class WaterSettings(_Section):
     """The water body and its medium."""
 
     depth: float = Field(50.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]")
-    ior: float = Field(1.333, ge=1.1, le=2.0, description="refractive index of water [-] (a surface that "
-                                                         "refracts: 1.1 to 2)")
+    ior: float | None = Field(None, ge=1.1, le=2.0, description="refractive index of water [-] (a surface that "
+                                                               "refracts: 1.1 to 2); left out: from temperature and "
+                                                               "salinity when either is given (Quan & Fry 1995, at "
+                                                               "550 nm), else 1.333")
+    temperature: float | None = Field(None, ge=-2, le=40, description="water temperature [°C], −2 to 40: the "
+                                                                       "refractive index (a_w is not corrected)")
+    salinity: float | None = Field(None, ge=0, le=42, description="salinity [PSU], 0 to 42: the refractive index "
+                                                                   "and the scattering of sea water (Morel 1974)")
     iop_table: str = Field("pure_seawater.csv", min_length=1, max_length=4096,
                            description="table of a, b [m⁻¹]: a bare file name is in spectra/, a path is relative "
                                        "to the scene file")
@@ -266,16 +272,22 @@ class WaterSettings(_Section):
             raise ValueError(f"expected 'auto' or a Beckmann α in [0, 1], got {value}")
         return value
 
+    @model_validator(mode="after")
+    def _ior_or_water_state(self) -> "WaterSettings":
+        if self.ior is not None and (self.temperature is not None or self.salinity is not None):
+            raise ValueError("ior: leave it out when temperature or salinity is given (the index follows from "
+                             "them, Quan & Fry 1995), or give ior alone")
+        return self
+
 
 class CompositionSettings(_Section):
     """What is in the water (issue 4): a preset and/or concentrations of each component.
 
-    Keys left out take the preset's value (or zero without a preset).
+    Keys left out take the preset's value (or zero without a preset). The water's
+    temperature and salinity are ``[water]`` keys.
     """
 
     preset: Literal["clear open ocean", "green coastal", "turbid brown estuary"] | None = None
-    temperature_c: float | None = Field(None, ge=-2, le=40, description="water temperature [°C]")
-    salinity_psu: float | None = Field(None, ge=0, le=42, description="salinity [PSU]")
     chlorophyll_mg_m3: float | None = Field(None, ge=0, le=1000, description="chlorophyll a [mg m⁻³]")
     soil_g_m3: float | None = Field(None, ge=0, le=10_000, description="soil particles [g m⁻³]")
     kaolinite_g_m3: float | None = Field(None, ge=0, le=10_000, description="kaolinite clay [g m⁻³]")

