@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import math
 import sys
 import time
 import warnings
@@ -28,6 +29,16 @@ def _frame_range(text: str) -> tuple[int, int]:
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected START:END (e.g. 0:3), got {text!r}") from None
     return start, end
+
+
+def _point(text: str) -> tuple[float, float]:
+    try:
+        x, y = (float(part) for part in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected X,Y in metres (e.g. 10.5,-3), got {text!r}") from None
+    if not (math.isfinite(x) and math.isfinite(y)):
+        raise argparse.ArgumentTypeError(f"expected finite X,Y in metres, got {text!r}")
+    return x, y
 
 
 def _resolution(text: str) -> tuple[int, int]:
@@ -147,6 +158,17 @@ def build_parser() -> argparse.ArgumentParser:
                        help="frames per second (default: from the frames' EXR metadata, else 24)")
     movie.add_argument("--crf", type=int, default=18, help="H.264 quality, 0 (lossless) to 51 (default 18)")
     movie.add_argument("--columns", type=int, default=6, help="contact-sheet columns (default 6)")
+
+    probe = commands.add_parser(
+        "probe", help="the sea's height, water velocity and normal at points over time, as CSV",
+        description="Print (or write with --out) one CSV row per frame and point: frame, time_s, x_m, y_m, "
+                    "height_m (above the still level), u/v/w_m_s (the water's velocity at the surface), "
+                    "normal_x/y/z, converged, folded. What floating objects stand on.")
+    probe.add_argument("scene", type=Path, help="scene file (TOML) of an open sea (no [coastal])")
+    probe.add_argument("--at", type=_point, action="append", required=True, metavar="X,Y",
+                       help="a world point [m]; repeat for more points")
+    probe.add_argument("--frames", type=_frame_range, metavar="A:B", help="half-open frame range (default: the scene's)")
+    probe.add_argument("--out", type=Path, metavar="FILE", help="CSV file to write (default: standard output)")
 
     info = commands.add_parser(
         "info", help="versions against the lock, usable Mitsuba variants and the LLVM library",
@@ -423,6 +445,46 @@ def cmd_geometry(args: argparse.Namespace) -> int:
         written += 2
         print(f"camera-following mesh -> {ply}, {table}")
     print(f"wrote {written} file(s) for frames {start}:{end}")
+    return 0
+
+
+#: Columns of ``oceanrender probe``'s CSV, with their units in the names.
+PROBE_COLUMNS = ("frame", "time_s", "x_m", "y_m", "height_m", "u_m_s", "v_m_s", "w_m_s",
+                 "normal_x", "normal_y", "normal_z", "converged", "folded")
+
+
+def cmd_probe(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    if args.frames is not None:
+        scene = with_overrides(scene, "command line", output={"frames": args.frames})
+    if scene.coastal is not None:
+        raise UserError(f"{args.scene}: [coastal]: probe reads the open sea only; a coastal zone's heights are "
+                        "the shallow-water fields (`oceanrender coastal` writes them)")
+    if args.out is not None and args.out.is_dir():
+        raise UserError(f"--out: {args.out} is a folder; expected a CSV file name")
+    from .scene.motion import frame_times  # noqa: PLC0415
+    from .waves.probe import probe_sea  # noqa: PLC0415
+    from .waves.sea import SeaSurface  # noqa: PLC0415
+
+    frames = range(*scene.output.frames)
+    x, y = (list(v) for v in zip(*args.at))
+    result = probe_sea(SeaSurface(scene.ocean), x, y, frame_times(scene.output.frames, scene.output.fps))
+    rows = [",".join(PROBE_COLUMNS)]
+    for i, frame in enumerate(frames):
+        for j in range(len(x)):
+            values = (result.times[i], result.x[j], result.y[j], result.height[i, j], *result.velocity[i, j],
+                      *result.normal[i, j])
+            rows.append(",".join([str(frame), *(repr(float(v)) for v in values),
+                                  str(bool(result.converged[i, j])).lower(), str(bool(result.folded[i, j])).lower()]))
+    text = "\n".join(rows) + "\n"
+    if args.out is None:
+        sys.stdout.write(text)
+        return 0
+    from .io.frames import atomic_path  # noqa: PLC0415
+
+    with atomic_path(args.out, ".csv") as tmp:
+        tmp.write_text(text)
+    print(f"wrote {len(rows) - 1} rows ({len(frames)} frames x {len(x)} points) to {args.out}", file=sys.stderr)
     return 0
 
 
@@ -717,7 +779,8 @@ def cmd_reference(args: argparse.Namespace) -> int:
     return 0
 
 COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "coastal": cmd_coastal, "optics": cmd_optics,
-            "movie": cmd_movie, "info": cmd_info, "bake-luts": cmd_bake_luts, "reference": cmd_reference}
+            "movie": cmd_movie, "info": cmd_info, "bake-luts": cmd_bake_luts, "reference": cmd_reference,
+            "probe": cmd_probe}
 
 
 def one_line(message: object) -> str:

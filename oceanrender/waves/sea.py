@@ -25,6 +25,7 @@ from .fft_ocean import FFTOcean, OceanGrid
 from .fractal import estimate_fbm_parameters, fractal_detail
 from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from_spectrum
 from .lod import LEVEL_POINTS_PER_WAVELENGTH, CascadeLevels, GainCompensated
+from .query import Sampler, SurfaceSample
 from .roughness import elevation_variance, unresolved_slope_variance
 from .wave_spectra import DirectionalSpectrum
 
@@ -169,6 +170,7 @@ class SeaSurface:
     def __init__(self, ocean: OceanSettings):
         self.settings = ocean
         self.spectrum = directional_spectrum(ocean)
+        self._query_stacks: tuple[float, dict] | None = None  # the level stacks of the last time surface_sample saw
         self.levels: tuple[CascadeLevels, ...] = ()
         if ocean.model == "FFT":
             sizes = cascade_patch_sizes(ocean.patch_size, ocean.cascades)
@@ -262,28 +264,39 @@ class SeaSurface:
         missing = np.maximum(self.total_slope_variance - resolved, 0.0)
         return missing if spacing is None else missing[inverse].reshape(np.shape(spacing))
 
-    def _level_fields(self, t: float) -> tuple[list[tuple[int, int]], list]:
-        """(cascade, level) indices of all non-empty levels, and their fields at time t [s]."""
-        entries = [(i, j) for i, levels in enumerate(self.levels) for j in range(levels.count - 1)]
-        return entries, [self.levels[i].oceans[j].fields(t) for i, j in entries]
+    def _level_stack(self, cascade: int, level: int, t: float, names: tuple[str, ...]) -> NDArray:
+        """The (N², q) stack of the fields ``names`` of one level at time t [s].
 
-    def _weighted(self, x: NDArray, y: NDArray, t: float, spacing: NDArray | None, columns: slice) -> NDArray:
-        """Σ over levels of weight × the bilinearly sampled quantities ``SAMPLED[columns]``, shape (q, *x.shape)."""
-        entries, fields = self._level_fields(t)
+        One interleaved stack, so each corner is one gather of q values; a copy (the
+        fields are views of buffers the level's next synthesis reuses).
+        """
+        f = self.levels[cascade].oceans[level].fields(t)
+        return np.stack([sampled_field(f, name) for name in names], axis=-1).reshape(-1, len(names))
+
+    def _weighted(self, x: NDArray, y: NDArray, t: float, spacing: NDArray | None, columns: slice,
+                  cache: dict | None = None) -> NDArray:
+        """Σ over levels of weight × the bilinearly sampled quantities ``SAMPLED[columns]``, shape (q, *x.shape).
+
+        Only the levels some point weights are synthesised. ``cache``: a dict of the level
+        stacks of this (t, columns), filled and reused (repeated queries at one time).
+        """
         names = SAMPLED[columns]
         shape = np.shape(x)
         total = np.zeros((len(names), int(np.prod(shape))))
         flat_x, flat_y = np.ravel(x), np.ravel(y)
         flat_spacing = None if spacing is None else np.ravel(np.broadcast_to(spacing, shape))
         weights = [levels.weights(flat_spacing, (flat_x.size,)) for levels in self.levels]
-        for (i, j), f in zip(entries, fields):
+        for i, j in ((i, j) for i, levels in enumerate(self.levels) for j in range(levels.count - 1)):
             w = weights[i][j]
             where = np.flatnonzero(w > 0)
             if where.size == 0:
                 continue
+            stack = None if cache is None else cache.get((i, j))
+            if stack is None:
+                stack = self._level_stack(i, j, t, names)
+                if cache is not None:
+                    cache[(i, j)] = stack
             grid = self.levels[i].oceans[j].grid
-            # one interleaved (N², q) stack, so each corner is one gather of q values
-            stack = np.stack([sampled_field(f, name) for name in names], axis=-1).reshape(-1, len(names))
             corners, bilinear = bilinear_corners(grid, flat_x[where], flat_y[where])
             part = sum(np.take(stack, c, axis=0) * b[:, None] for c, b in zip(corners, bilinear))
             total[:, where] += (w[where][:, None] * part).T
@@ -319,11 +332,41 @@ class SeaSurface:
         xx, yy, xy = self._weighted(np.asarray(x, float), np.asarray(y, float), t, spacing, slice(5, 8))
         return (1 + xx) * (1 + yy) - xy * xy
 
-    def _sample_components(self, x, y, t) -> SurfacePoints:
+    def surface_sample(self, x: NDArray, y: NDArray, t: float) -> SurfaceSample:
+        """The sea at rest points (x, y) [m] at time t [s] as a height query needs it (every wave kept).
+
+        Displacement (Dx, Dy), height η [m], slope ∂η/∂x₀, ∂η/∂y₀ and the displacement
+        gradient ∇D [-], for :func:`~.query.query_height` (through :meth:`sampler`).
+        """
+        x, y = np.asarray(x, float), np.asarray(y, float)
+        if self.cascades is None:
+            f = self._component_fields(x, y, t)
+            gradient = np.stack([np.stack([f.jacobian_xx - 1, f.jacobian_xy], -1),
+                                 np.stack([f.jacobian_xy, f.jacobian_yy - 1], -1)], -2)
+            return SurfaceSample(np.stack([f.displacement_x, f.displacement_y], -1), np.asarray(f.height, float),
+                                 np.stack([f.slope_x, f.slope_y], -1), gradient)
+        if self._query_stacks is None or self._query_stacks[0] != t:
+            self._query_stacks = (t, {})  # Newton's steps query one time often: synthesise each level once
+        height, dx, dy, sx, sy, xx, yy, xy = self._weighted(x, y, t, None, slice(0, 8), self._query_stacks[1])
+        if self.fractal is not None:
+            gamma = self.settings.fractal_gamma
+            detail, detail_x, detail_y = self.fractal.sample(x, y)
+            height, sx, sy = height + gamma * detail, sx + gamma * detail_x, sy + gamma * detail_y  # ζ = η + γ η_f
+        gradient = np.stack([np.stack([xx, xy], -1), np.stack([xy, yy], -1)], -2)
+        return SurfaceSample(np.stack([dx, dy], -1), height, np.stack([sx, sy], -1), gradient)
+
+    def sampler(self, t: float) -> Sampler:
+        """The sea at time t [s] as a :data:`~.query.Sampler` of rest points, for height queries."""
+        return lambda x, y: self.surface_sample(x, y, t)
+
+    def _component_fields(self, x, y, t):
         ocean = self.settings
         if ocean.model == "Gerstner":
-            f = gerstner_fields(self.components, x, y, t, depth=ocean.wave_depth, steepness=ocean.gerstner_steepness)
-        else:
-            f = sum_of_sines_fields(self.components, x, y, t, depth=ocean.wave_depth)
+            return gerstner_fields(self.components, x, y, t, depth=ocean.wave_depth,
+                                   steepness=ocean.gerstner_steepness)
+        return sum_of_sines_fields(self.components, x, y, t, depth=ocean.wave_depth)
+
+    def _sample_components(self, x, y, t) -> SurfacePoints:
+        f = self._component_fields(x, y, t)
         displacement = np.stack([f.displacement_x, f.displacement_y, f.height], axis=-1)
         return SurfacePoints(displacement, f.normals, f.jacobian)
