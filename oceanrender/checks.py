@@ -8,12 +8,9 @@ any stage allocates or writes:
 * the water's tables (:func:`check_tables`): every IOP table read and checked
   for shape, finiteness and sign, the composition's components resolved;
 * the open sea against its water body (:func:`check_sea`): the flat bottom
-  below the deepest troughs and the camera above the highest crests, judged on
-  the spectrum's elevation σ. A Gaussian sea exceeds 8σ at a point with
-  probability ~10⁻¹⁵; the highest crest of N waves is about σ √(2 ln N)
-  (Longuet-Higgins 1952, Rayleigh crest heights): 3.7σ for N = 1000, so a
-  camera above 4σ stays dry through a long sequence, and level views from 1 m
-  over an 8 m/s sea (σ = 0.21 m) remain possible;
+  below the deepest troughs, judged on the spectrum's elevation σ (a Gaussian sea
+  exceeds 8σ at a point with probability ~10⁻¹⁵). The camera may be anywhere above
+  the bottom: each frame renders from the side of the surface its pinhole is on;
 * memory (:func:`memory_estimate`, :func:`check_memory`): the stages' peak
   memory from the scene's sizes, with per-unit costs measured by
   ``benchmarks/bench_memory.py`` (BENCHMARKS.md, "Memory"), against the memory
@@ -51,9 +48,8 @@ FIXED_BYTES = 1.5 * GiB
 #: Share of the memory available now that a run may plan to use.
 MEMORY_SHARE = 0.8
 
-#: Elevation σ multiples: the bottom must lie below −8σ, the camera above +4σ (see the module docstring).
+#: Elevation σ multiple: the bottom must lie below −8σ (see the module docstring).
 TROUGH_SIGMAS = 8.0
-CREST_SIGMAS = 4.0
 
 
 @dataclass(frozen=True)
@@ -143,18 +139,8 @@ def check_tables(scene: Scene, source: str) -> None:
         raise SceneError(f"{source}: [composition]: {exc}") from None
 
 
-def lowest_camera_height(scene: Scene) -> float:
-    """Lowest camera height over the scene's frames [m] (the static position, or the path at every frame time)."""
-    if not scene.camera.animated:
-        return float(scene.camera.position[2])
-    from .scene.motion import frame_times, scene_camera_path  # noqa: PLC0415
-
-    path = scene_camera_path(scene.camera)
-    return min(float(path.at(t).position[2]) for t in frame_times(scene.output.frames, scene.output.fps))
-
-
 def check_sea(scene: Scene, source: str) -> None:
-    """The open sea fits its water body: bottom below −8σ, camera above +4σ of the elevation [m]."""
+    """The open sea fits its water body: its bottom below −8σ of the elevation [m]."""
     if scene.coastal is not None and scene.coastal.waves != "open sea":
         return
     from .waves.sea import elevation_std  # noqa: PLC0415
@@ -167,12 +153,8 @@ def check_sea(scene: Scene, source: str) -> None:
     if scene.water.depth < floor:
         raise SceneError(f"{source}: [water] depth: {scene.water.depth:g} m is above the deepest troughs of the sea; "
                          f"expected ≥ {floor:.3g} m ({TROUGH_SIGMAS:g} σ, σ = {sigma:.3g} m of the [ocean] spectrum)")
-    crest = CREST_SIGMAS * sigma
-    low = lowest_camera_height(scene)
-    if low < crest:
-        raise SceneError(f"{source}: [camera] position: the camera comes down to z = {low:g} m, into the crests of "
-                         f"the sea; expected z ≥ {crest:.3g} m ({CREST_SIGMAS:g} σ, σ = {sigma:.3g} m); under-water "
-                         f"views are not supported yet")
+    # NOTE: no check of the camera against the crests: each frame renders from the side of the surface its
+    # pinhole is on (WaterRenderer.camera_in_water), so a camera path may cross the surface.
 
 
 #: Bytes per grid point and cascade of one frame of wave maps: 4 EXR maps × 3 float32 channels (export/wave_maps.py).

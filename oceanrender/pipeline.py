@@ -258,7 +258,10 @@ class Sequence:
             "frame": frame,
             "time_s": self.time_of(frame),
             "spp": self.spp,
-            "in_water_spp": self.renderer.in_water_spp(self.spp) if self.renderer.in_water is not None else self.spp,
+            "in_water_spp": (self.renderer.in_water_spp(self.spp)
+                             if self.renderer.in_water is not None and not self.renderer.last_camera_in_water
+                             else self.spp),
+            "camera_in_water": bool(self.renderer.last_camera_in_water),
             "roulette_depth": self.scene.render.roulette_depth,
             "variant": self.variant,
             "oceanrender_version": __version__,

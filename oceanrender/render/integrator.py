@@ -270,6 +270,12 @@ def _define_class() -> type:
             Traced by :func:`oceanrender.render.underwater.trace_path` (hero-wavelength spectral
             MIS in the water, in-water sun sampling when the integrator has a sun), not by volpath.
             """
+            depth = 1 << 20 if self.max_depth < 0 else self.max_depth - 1
+            return self._trace(scene, sampler, ray, medium, active, bsdfs, depth, max(self.rr_depth - 1, 1), last)
+
+        def _trace(self, scene, sampler, ray, medium, active, bsdfs, depth, rr_depth, last=None):
+            """:func:`~oceanrender.render.underwater.trace_path` of ``ray`` from ``medium`` with this
+            integrator's sun sampling; the split BSDFs ``bsdfs`` are the air-water surface."""
             from .underwater import trace_path  # noqa: PLC0415
 
             def is_water_surface(ptr):
@@ -278,10 +284,28 @@ def _define_class() -> type:
                     on |= same_object(ptr, b, mi.BSDFPtr)
                 return on
 
-            depth = 1 << 20 if self.max_depth < 0 else self.max_depth - 1
             sun = {} if self.sun is None else {"eta": self.water_ior, "alpha": self.sun_lobe_alpha}
             return trace_path(scene, sampler, mi.Ray3f(ray), medium, active, is_water_surface=is_water_surface,
-                              sun=self.sun, max_depth=depth, rr_depth=max(self.rr_depth - 1, 1), last=last, **sun)
+                              sun=self.sun, max_depth=depth, rr_depth=rr_depth, last=last, **sun)
+
+        def _from_camera_in_water(self, scene, sampler, ray, medium, active):
+            """A camera inside the water body (its sensor's ``medium``): the whole path by ``trace_path``.
+
+            No vertex is split (the camera ray starts in the water), so the ``"reflection"`` (or
+            ``"both"``) pass takes the whole sample and the ``"transmission"`` pass none, as for
+            rays that meet no water. In JIT variants the path is traced like the light behind a
+            split vertex (hero-wavelength MIS, in-water sun sampling: the light shafts); scalar
+            variants, and scenes whose water is not one homogeneous medium inside a dielectric,
+            use ``volpath``.
+            """
+            if self.lobes == "transmission":
+                return mi.Spectrum(0.0), mi.Bool(active), []
+            setup = self.split_setup(scene, None) if self.splits else None
+            if not jit or setup is None or not any(medium is m for m in setup[1]):
+                return self.full.sample(scene, sampler, ray, medium, active)
+            depth = 1 << 20 if self.max_depth < 0 else self.max_depth
+            L = self._trace(scene, sampler, ray, mi.MediumPtr(medium), mi.Bool(active), setup[0], depth, self.rr_depth)
+            return L, mi.Bool(active), []
 
         def _reflected_scalar(self, scene, sampler, si, bsdf, ctx_r, bs_r, ray_r):
             """Scalar variants: the reflected ray's first emitter hit (MIS against the NEE) + volpath after it."""
@@ -346,6 +370,8 @@ def _define_class() -> type:
 
         def sample(self, scene, sampler, ray, medium=None, active=True):
             full = self.full
+            if medium is not None:  # a camera in the water (the sensor's medium): no split vertex
+                return self._from_camera_in_water(scene, sampler, ray, medium, active)
             setup = self.split_setup(scene, medium) if self.splits else None
             if setup is None:
                 if self.lobes == "transmission":  # nothing is split: the whole sample is the other pass's

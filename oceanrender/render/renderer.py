@@ -72,14 +72,16 @@ def sample_passes(pixels: int, spp: int, seed: int, cap: int = MAX_SAMPLES_PER_P
     return [(size, (int(seed) + i * 0x9E3779B9) % (1 << 32)) for i, size in enumerate(sizes)]
 
 
-def render_passes(scene, spp: int, seed: int, integrator=None) -> np.ndarray:
-    """Mean film of ``spp`` samples per pixel rendered in :func:`sample_passes` passes (H, W, C)."""
+def render_passes(scene, spp: int, seed: int, integrator=None, sensor: int = 0) -> np.ndarray:
+    """Mean film of ``spp`` samples per pixel rendered in :func:`sample_passes` passes (H, W, C), by the
+    scene's sensor number ``sensor``."""
     import mitsuba as mi  # noqa: PLC0415
 
-    width, height = scene.sensors()[0].film().crop_size()
+    width, height = scene.sensors()[sensor].film().crop_size()
     total = None
     for size, pass_seed in sample_passes(int(width) * int(height), spp, seed):
-        film = np.array(mi.render(scene, integrator=integrator, seed=pass_seed, spp=size), dtype=np.float64)
+        film = np.array(mi.render(scene, integrator=integrator, seed=pass_seed, spp=size, sensor=sensor),
+                        dtype=np.float64)
         total = film * size if total is None else total + film * size
     return total / int(spp)
 
@@ -118,18 +120,27 @@ def mitsuba_floats(array: np.ndarray):
     return mi.Float(np.ascontiguousarray(array, dtype=np.float32).ravel())
 
 
-def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: dict | None = None):
-    """The water body as a Mitsuba mesh (id :data:`WATER_ID`) with ``bsdf`` and, if given, an interior medium."""
+def load_water_medium(medium: dict):
+    """The water's medium (:func:`~oceanrender.render.scene.water_medium`) as a loaded Mitsuba object,
+    to be shared by the water body (its interior) and a camera under the water (its sensor's medium)."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    from .phase import register, register_tabulated  # noqa: PLC0415
+
+    register()  # the water's spectral phase functions (water_medium)
+    register_tabulated()
+    return mi.load_dict(medium)
+
+
+def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=None):
+    """The water body as a Mitsuba mesh (id :data:`WATER_ID`) with ``bsdf`` and, if given, an interior medium
+    (a dict of :func:`~oceanrender.render.scene.water_medium`, or the object :func:`load_water_medium` made)."""
     import mitsuba as mi  # noqa: PLC0415
 
     props = mi.Properties()
     props["bsdf"] = mi.load_dict(bsdf)
     if medium is not None:
-        from .phase import register, register_tabulated  # noqa: PLC0415
-
-        register()  # the water's spectral phase functions (water_medium)
-        register_tabulated()
-        props["interior"] = mi.load_dict(medium)
+        props["interior"] = load_water_medium(medium) if isinstance(medium, dict) else medium
     mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
     if geometry.foam is not None:
         mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(geometry.foam))
@@ -142,6 +153,12 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium: d
     params.update()
     return mesh
 
+
+#: Shapes a vertical ray from the camera passes before it gives up looking for the water's surface.
+MAX_SHAPES_ABOVE_CAMERA = 16
+
+#: Key of the camera in the water's medium (the scene's second sensor; the first is ``"sensor"``).
+UNDERWATER_SENSOR = "sensor_underwater"
 
 #: Id of the terrain mesh in the Mitsuba scene.
 TERRAIN_ID = "terrain"
@@ -252,6 +269,10 @@ class WaterRenderer:
     in_water: object | None = None
     #: Samples per pixel of the in-water pass as a fraction of the frame's spp [-].
     in_water_fraction: float = 1.0
+    #: Where the camera is [m] (the pinhole), for :meth:`camera_in_water`.
+    camera_position: np.ndarray | None = None
+    #: Whether the last frame :meth:`render_xyz` rendered had its camera under the water.
+    last_camera_in_water: bool = False
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -272,7 +293,8 @@ class WaterRenderer:
         bsdf = water_surface_bsdf(water_ior(settings), roughness, per_vertex=geometry.roughness is not None)
         if geometry.foam is not None:
             bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
-        mesh = water_mesh(faces, geometry, bsdf, water_medium(iops))
+        medium = load_water_medium(water_medium(iops))
+        mesh = water_mesh(faces, geometry, bsdf, medium)
         sun_sampling = {}
         if settings.render.sun_sampling and sun_lobe_alpha is not None:
             sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
@@ -283,18 +305,23 @@ class WaterRenderer:
         integrator = {"kind": render.integrator, "max_depth": render.max_depth, "rr_depth": render.roulette_depth,
                       **sun_sampling}
         in_water = mi.load_dict(volumetric_integrator(**integrator, lobes="transmission")) if two_pass else None
+        sensor = perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands),
+                                    spp or settings.output.spp)
         scene = mi.load_dict({
             "type": "scene",
             "integrator": volumetric_integrator(**integrator, lobes="reflection" if two_pass else "both"),
-            "sensor": perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands),
-                                         spp or settings.output.spp),
+            "sensor": sensor,
+            # NOTE: the same camera in the water's medium; a frame whose camera is under the surface renders
+            # with it (camera_in_water), so its rays start in the water.
+            UNDERWATER_SENSOR: {**sensor, "medium": medium},
             "sky": sunsky_emitter(settings.sun),
             WATER_ID: mesh,
             **terrain_shapes(terrain),
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
                    bands=settings.output.spectral_bands, in_water=in_water,
-                   in_water_fraction=render.in_water_fraction if two_pass else 1.0)
+                   in_water_fraction=render.in_water_fraction if two_pass else 1.0,
+                   camera_position=np.asarray(settings.camera.position, float))
 
     def integrators(self) -> list:
         """The Mitsuba integrators a frame uses: the scene's, then the in-water pass's (two-pass frames)."""
@@ -306,8 +333,34 @@ class WaterRenderer:
 
     def point_camera(self, position, target, fov: float) -> None:
         """Move the camera to ``position`` looking at ``target`` [m], horizontal ``fov`` [deg], in place."""
-        apply_camera(self.params, CameraPose(np.asarray(position, float), np.asarray(target, float), float(fov)),
-                     sensor="sensor")
+        pose = CameraPose(np.asarray(position, float), np.asarray(target, float), float(fov))
+        apply_camera(self.params, pose, sensor="sensor")
+        apply_camera(self.params, pose, sensor=UNDERWATER_SENSOR)
+        self.camera_position = pose.position
+
+    def camera_in_water(self) -> bool:
+        """Whether the camera's pinhole is inside the water body of the current frame.
+
+        Decided on the frame's own mesh: a ray from the pinhole straight up meets the water
+        body's surface from inside (its outward normal along the ray) exactly when the
+        pinhole is under the water — the surface that is rendered, not a model of it.
+        """
+        import mitsuba as mi  # noqa: PLC0415
+
+        if self.camera_position is None:
+            return False
+        water = next(shape for shape in self.scene.shapes() if shape.id() == WATER_ID)
+        jit = mi.variant().startswith(("llvm", "cuda"))
+        ray = mi.Ray3f(mi.Point3f(*(float(v) for v in self.camera_position)), mi.Vector3f(0.0, 0.0, 1.0))
+        for _ in range(MAX_SHAPES_ABOVE_CAMERA):  # past other shapes (a hull, rock) to the water's first hit
+            si = self.scene.ray_intersect(ray)
+            if not bool(np.array(si.is_valid(), dtype=bool).ravel()[0]):
+                return False
+            on_water = (si.shape == mi.ShapePtr(water)) if jit else (si.shape is water)
+            if bool(np.array(on_water, dtype=bool).ravel()[0]):
+                return bool(np.array(si.n.z, dtype=float).ravel()[0] > 0)  # outward normal: leaving the water
+            ray = si.spawn_ray(ray.d)
+        return False
 
     def point_sun(self, elevation: float, azimuth: float) -> None:
         """Move the sun of the sky and of the ``split`` integrator's in-water sampling [deg], in place.
@@ -337,8 +390,10 @@ class WaterRenderer:
         seed stream) to the rest (``spp``): the film values are per-pixel means, and the two
         passes estimate disjoint parts of each sample's radiance, so their sum is unbiased.
         """
-        film = render_passes(self.scene, int(spp), int(seed))
-        if self.in_water is not None:
+        self.last_camera_in_water = self.camera_in_water()
+        sensor = 1 if self.last_camera_in_water else 0
+        film = render_passes(self.scene, int(spp), int(seed), sensor=sensor)
+        if self.in_water is not None and sensor == 0:  # under the water nothing is split: one pass is the frame
             film = film + render_passes(self.scene, self.in_water_spp(spp), in_water_seed(seed), self.in_water)
         if self.bands:
             self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]

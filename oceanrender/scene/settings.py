@@ -724,14 +724,19 @@ class Scene(_Section):
         return self
 
     @model_validator(mode="after")
-    def _camera_above_water(self) -> "Scene":
-        level = self.coastal.still_level if self.coastal is not None else 0.0
+    def _camera_in_the_water_body(self) -> "Scene":
         positions = ([self.camera.position] + [key.position for key in self.camera.keys]
                      + [view.position for view in self.camera.views.values()])
         low = min(position[2] for position in positions)
-        if low <= level:
-            raise ValueError(f"[camera] position: the camera is at z = {low:g} m, at or below the still water "
-                             f"level {level:g} m; under-water views are not supported yet")
+        if self.coastal is not None:
+            level = self.coastal.still_level
+            if low <= level:
+                raise ValueError(f"[camera] position: the camera is at z = {low:g} m, at or below the still water "
+                                 f"level {level:g} m; under-water views of a [coastal] scene are not supported "
+                                 f"(open-sea scenes only)")
+        elif low <= -self.water.depth:
+            raise ValueError(f"[camera] position: the camera is at z = {low:g} m, at or below the water body's "
+                             f"bottom (−[water] depth = {-self.water.depth:g} m); expected z > {-self.water.depth:g}")
         return self
 
     @model_validator(mode="after")

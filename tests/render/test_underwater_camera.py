@@ -1,0 +1,65 @@
+"""A camera under the water: Snell's window, no NaN, and the side of the surface decided per frame."""
+
+import math
+
+import numpy as np
+import pytest
+
+from oceanrender.cli import main
+from oceanrender.io.frames import read_exr
+
+#: Refractive index of the scenes below ([water] ior default) [-].
+N_WATER = 1.333
+
+
+def _render(tmp_path, name, camera, extra="", resolution=(192, 192), spp=16):
+    path = tmp_path / f"{name}.toml"
+    path.write_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [{resolution[0]}, {resolution[1]}]\n'
+                    f'spp = {spp}\ndirectory = "{tmp_path / "out"}"\n{camera}\n[sun]\nelevation = 50.0\n'
+                    f'azimuth = 180.0\n{extra}')
+    assert main(["render", str(path), "--no-progress"]) == 0
+    return read_exr(tmp_path / "out" / name / "frame_0000.exr")
+
+
+def test_snells_window_from_under_a_calm_sea(tmp_path):
+    # Looking straight up from 3 m under a calm sea (0.5 m/s wind, smooth surface): the sky is seen inside a
+    # cone of half-angle asin(1/n) = 48.6°, total internal reflection of the deep water outside it.
+    fov = 110.0
+    channels, meta = _render(tmp_path, "window", '[camera]\nposition = [0.0, 0.0, -3.0]\n'
+                             f'target = [0.0, 0.001, 10.0]\nfov = {fov}',
+                             "[ocean]\nwind_speed = 0.5\n[water]\nsurface_roughness = 0.0\n")
+    assert meta["camera_in_water"] in (True, "true")
+    assert int(meta["repaired_pixels"]) == 0  # no non-finite pixel came out of the renderer
+    Y = channels["Y"]
+    assert np.all(np.isfinite(Y))
+    h, w = Y.shape
+    f = (w / 2) / math.tan(math.radians(fov / 2))
+    yy, xx = np.mgrid[0:h, 0:w]
+    theta = np.degrees(np.arctan(np.hypot(xx + 0.5 - w / 2, yy + 0.5 - h / 2) / f))
+    edges = np.arange(40.0, 58.0, 0.5)
+    ring = np.array([np.median(Y[(theta >= a) & (theta < a + 0.5)]) for a in edges])
+    inside, outside = np.median(ring[edges < 46]), np.median(ring[edges >= 52])
+    assert inside > 10 * outside  # the window is bright, its surround dark
+    level = math.sqrt(inside * outside)  # halfway in log between the two
+    crossing = edges[np.argmax(ring < level)]  # first 0.5° ring below it
+    expected = math.degrees(math.asin(1.0 / N_WATER))  # 48.61°
+    # ±1°: two rings of 0.5° (the crossing is located to a ring), pixels ~0.4° wide at 48°, ripples of a
+    # 0.5 m/s sea tilt the surface by a few tenths of a degree.
+    assert abs(crossing + 0.25 - expected) <= 1.0, (crossing, expected)
+
+
+def test_a_level_view_under_the_waves_has_no_nan_and_is_under_water(tmp_path):
+    channels, meta = _render(tmp_path, "level", "[camera]\nposition = [0.0, 0.0, -4.0]\n"
+                             "target = [0.0, 10.0, -1.0]\nfov = 90.0", resolution=(64, 36), spp=8)
+    assert meta["camera_in_water"] in (True, "true")
+    assert int(meta["repaired_pixels"]) == 0
+    rgb = np.stack([channels[c] for c in "RGB"], -1)
+    assert np.all(np.isfinite(rgb))
+    # Under clear sea water everything is blue-green: blue exceeds red in the mean of the frame.
+    assert rgb[..., 2].mean() > 2 * rgb[..., 0].mean()
+
+
+def test_a_camera_above_the_water_renders_from_the_air(tmp_path):
+    _, meta = _render(tmp_path, "above", "[camera]\nposition = [0.0, 0.0, 6.0]\ntarget = [0.0, 10.0, 0.0]\nfov = 60.0",
+                      resolution=(32, 18), spp=4)
+    assert meta["camera_in_water"] in (False, "false")
