@@ -463,12 +463,14 @@ def cmd_probe(args: argparse.Namespace) -> int:
     if args.out is not None and args.out.is_dir():
         raise UserError(f"--out: {args.out} is a folder; expected a CSV file name")
     from .scene.motion import frame_times  # noqa: PLC0415
+    from .surface.objects import scene_wakes  # noqa: PLC0415
     from .waves.probe import probe_sea  # noqa: PLC0415
     from .waves.sea import SeaSurface  # noqa: PLC0415
 
     frames = range(*scene.output.frames)
     x, y = (list(v) for v in zip(*args.at))
-    result = probe_sea(SeaSurface(scene.ocean), x, y, frame_times(scene.output.frames, scene.output.fps))
+    sea = SeaSurface(scene.ocean, scene_wakes(scene))  # the sea the water body is made of: wakes included
+    result = probe_sea(sea, x, y, frame_times(scene.output.frames, scene.output.fps))
     rows = [",".join(PROBE_COLUMNS)]
     for i, frame in enumerate(frames):
         for j in range(len(x)):

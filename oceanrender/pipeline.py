@@ -168,10 +168,14 @@ class Sequence:
         else:
             self.white_xyz = adapting_white_XYZ(scene, seed=scene.render.seed)
         self.in_water_clamp = scene.render.in_water_clamp * white_mean_radiance(self.white_xyz)
+        from .surface.objects import SceneObjects  # noqa: PLC0415
+
+        self.objects = SceneObjects(scene, getattr(self.body, "sea", None))
         self.renderer = WaterRenderer.build(scene, self.iops, self.faces, first, roughness=self.roughness,
                                             in_water_clamp=self.in_water_clamp,
                                             sun_lobe_alpha=self.sun_lobe_alpha, terrain=self.body.terrain(),
-                                            spp=self.spp, resolution=self.resolution)
+                                            spp=self.spp, resolution=self.resolution,
+                                            objects=self.objects.frame(self.time_of(first_frame)))
         self.vision = vision_for_scene(scene)
         self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
 
@@ -184,7 +188,7 @@ class Sequence:
             self._white_frame = frame
 
     def point(self, frame: int) -> None:
-        """Point the camera and the sun at their poses of ``frame``'s time (animated scenes; else nothing).
+        """Pose the objects, point the camera and the sun at ``frame``'s time (animated scenes; else nothing).
 
         Moves the sensor (``apply_camera``), the ``sunsky`` sun and the
         ``split`` integrator's sun, re-measures the adapting white and sets
@@ -192,6 +196,8 @@ class Sequence:
         radiance. The water mesh follows the camera in :meth:`geometry`.
         """
         t = self.time_of(frame)
+        if self.objects.items:
+            self.renderer.update_objects(self.objects.frame(t))
         if self.camera_path is not None:
             self.pose = self.camera_path.at(t)
             self.renderer.point_camera(*self.pose)

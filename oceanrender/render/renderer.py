@@ -17,6 +17,7 @@ from ..optics.water import MediumOptics, WaterIOPs
 from ..scene import Scene
 from ..scene.motion import CameraPose, SunAngles
 from ..surface.frame import FrameGeometry, Terrain
+from .objects import object_id, object_mesh, update_object_positions
 from .scene import (
     FILM_RANGE_NM,
     ROUGHNESS_ATTRIBUTE,
@@ -199,6 +200,12 @@ def terrain_shape(terrain: Terrain):
     return mesh
 
 
+def object_shapes(settings: Scene, objects) -> dict:
+    """The scene-dict entries of the posed ``objects`` (by name, with their settings' materials)."""
+    by_name = {o.name: o for o in settings.objects}
+    return {object_id(g.name): object_mesh(by_name[g.name], g.positions, g.faces, g.uv) for g in objects}
+
+
 def terrain_shapes(terrain: Terrain | None) -> dict:
     """The scene-dict entries of a body's terrain: ``{"terrain": mesh}``, or none (open sea)."""
     return {} if terrain is None else {TERRAIN_ID: terrain_shape(terrain)}
@@ -278,14 +285,15 @@ class WaterRenderer:
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
               roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None,
               sun_lobe_alpha: float | None = None, terrain: Terrain | None = None,
-              in_water_clamp: float = 0.0) -> "WaterRenderer":
+              in_water_clamp: float = 0.0, objects: tuple = ()) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
         ``roughness`` is the Beckmann α of the water surface [-] (unused
         when ``geometry.roughness`` gives one per vertex);
         ``sun_lobe_alpha`` the total rms slope of the surface [-], which turns
         on the in-water sun sampling of the ``split`` integrator (when the
-        scene's ``render.sun_sampling`` allows it).
+        scene's ``render.sun_sampling`` allows it); ``objects`` the ``[[objects]]``
+        posed at the first frame (:class:`~oceanrender.surface.objects.ObjectGeometry`).
         """
         import mitsuba as mi  # noqa: PLC0415
 
@@ -317,6 +325,7 @@ class WaterRenderer:
             "sky": sunsky_emitter(settings.sun),
             WATER_ID: mesh,
             **terrain_shapes(terrain),
+            **object_shapes(settings, objects),
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
                    bands=settings.output.spectral_bands, in_water=in_water,
@@ -378,6 +387,14 @@ class WaterRenderer:
         for integrator in self.integrators():
             if getattr(integrator, "clamps", False):
                 integrator.set_in_water_clamp(float(value))
+
+    def update_objects(self, objects) -> None:
+        """Move the ``[[objects]]`` to their poses of a frame (:class:`~oceanrender.surface.objects.ObjectGeometry`)."""
+        if not objects:
+            return
+        for geometry in objects:
+            update_object_positions(self.params, geometry.name, geometry.positions)
+        self.params.update()
 
     def update_water(self, geometry: FrameGeometry) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place."""

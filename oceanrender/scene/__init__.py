@@ -5,7 +5,9 @@ beyond its inputs and imports only ``oceanrender.io``."""
 from .settings import (
     CameraSettings,
     FoamSettings,
+    OBJECT_MATERIALS,
     MeshSettings,
+    ObjectSettings,
     OceanSettings,
     OutputSettings,
     RenderSettings,
@@ -21,6 +23,6 @@ from .settings import (
 )
 
 __all__ = [
-    "CameraSettings", "FoamSettings", "MeshSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
+    "CameraSettings", "FoamSettings", "MeshSettings", "OBJECT_MATERIALS", "ObjectSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
     "SunSettings", "VisionSettings", "WaterSettings", "load_scene", "scene_from_dict", "with_overrides", "with_view",
 ]

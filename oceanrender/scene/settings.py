@@ -301,6 +301,54 @@ class CompositionSettings(_Section):
                                          "Harbor function, tabulated (docs/optics.md)")
 
 
+#: Materials of ``[[objects]]`` (docs/objects.md): Mitsuba's ``diffuse``, ``roughplastic``,
+#: ``roughconductor`` and ``roughdielectric``.
+OBJECT_MATERIALS = ("diffuse", "rough plastic", "conductor", "dielectric")
+#: Metals of ``material = "conductor"``: Mitsuba's measured spectral n, k tables of those names.
+CONDUCTORS = ("Ag", "Al", "Au", "Cr", "Cu")
+
+
+class ObjectSettings(_Section):
+    """One ``[[objects]]`` entry: a mesh file, its pose and motion, and a material.
+
+    The mesh's own frame: x forward (the bow), y to the left, z up, in metres ×
+    ``scale``; for a floating object its origin is on the still waterline.
+    """
+
+    name: str = Field(..., pattern=f"^{SAFE_NAME}$", description="the object's name (letters, digits, _ . -)")
+    mesh: str = Field(..., min_length=1, max_length=4096,
+                      description="OBJ, PLY, glTF or GLB file, relative to the scene file")
+    scale: float = Field(1.0, gt=0, le=1e4, description="scale of the mesh's units to metres [-]")
+    position: Vec3 = Field((0.0, 0.0, 0.0), description="where the mesh's origin is at t = 0 [m]; a floating "
+                                                        "object's z is its rest height above the still level")
+    heading: float = Field(0.0, ge=-360, le=360, description="where the bow (+x) points, clockwise from north [deg]")
+    pitch: float = Field(0.0, ge=-90, le=90, description="bow up [deg] (a floating object takes it from the sea)")
+    roll: float = Field(0.0, ge=-180, le=180, description="starboard down [deg] (floating: from the sea)")
+    speed: float = Field(0.0, ge=0, le=50, description="speed along the heading [m s⁻¹]")
+    floating: bool = Field(False, description="heave, pitch and roll from the sea under the waterline, each frame")
+    response_time: float = Field(1.0, ge=0, le=30, description="floating: time constant of the pose's critically "
+                                                               "damped response to the sea [s]; 0: none")
+    wake: bool = Field(True, description="leave the Kelvin wake of linear theory when moving (speed > 0)")
+    material: Literal["diffuse", "rough plastic", "conductor", "dielectric"] = "diffuse"
+    albedo: tuple[Annotated[float, Field(ge=0, le=1)], Annotated[float, Field(ge=0, le=1)],
+                  Annotated[float, Field(ge=0, le=1)]] = Field(
+        (0.5, 0.5, 0.5), description="sRGB reflectance (linear, 0 to 1), upsampled to a spectrum by Mitsuba")
+    albedo_texture: str | None = Field(None, min_length=1, max_length=4096,
+                                       description="an sRGB image instead of albedo (the mesh needs texture "
+                                                   "coordinates), relative to the scene file")
+    roughness: float = Field(0.1, ge=0.001, le=1, description="Beckmann α of rough plastic, conductor, dielectric [-]")
+    conductor: Literal["Ag", "Al", "Au", "Cr", "Cu"] = Field("Al", description="the metal of a conductor")
+    ior: float = Field(1.5, ge=1.0, le=3.0, description="refractive index of a dielectric [-]")
+
+    @model_validator(mode="after")
+    def _keys_of_its_kind(self) -> "ObjectSettings":
+        if self.floating and (self.pitch != 0 or self.roll != 0):
+            raise ValueError(f"{self.name}: pitch and roll come from the sea for a floating object; leave them out")
+        if self.albedo_texture is not None and self.material not in ("diffuse", "rough plastic"):
+            raise ValueError(f"{self.name}: albedo_texture applies to 'diffuse' and 'rough plastic' only")
+        return self
+
+
 #: Interpolations of keyframed motion (see :mod:`oceanrender.scene.motion`).
 Interpolation = Literal["monotone cubic", "Catmull-Rom"]
 
@@ -683,6 +731,16 @@ class Scene(_Section):
     sun: SunSettings = SunSettings()
     camera: CameraSettings = CameraSettings()
     vision: VisionSettings = VisionSettings()
+    objects: tuple[ObjectSettings, ...] = Field((), max_length=64, description="[[objects]]: meshes in the scene")
+
+    @field_validator("objects")
+    @classmethod
+    def _unique_object_names(cls, value: tuple[ObjectSettings, ...]) -> tuple[ObjectSettings, ...]:
+        names = [o.name for o in value]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:
+            raise ValueError(f"names must differ; {', '.join(twice)} appear(s) more than once")
+        return value
 
     @field_validator("camera")
     @classmethod
@@ -923,10 +981,18 @@ def resolve_scene_paths(data: dict, folder: Path) -> None:
         value = water.get("iop_table")
         if isinstance(value, str) and "/" in value and "\x00" not in value:
             water["iop_table"] = os.path.abspath(folder / value)
+    objects = data.get("objects")
+    if isinstance(objects, list):
+        for entry in objects:
+            for key in ("mesh", "albedo_texture"):
+                value = entry.get(key) if isinstance(entry, dict) else None
+                if isinstance(value, str) and value and "\x00" not in value:
+                    entry[key] = os.path.abspath(folder / value)
 
 
 def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
-    """Read and check the data files a scene names (coastal arrays); SceneError naming the key."""
+    """Read and check the data files a scene names (coastal arrays, object meshes); SceneError naming the key."""
+    check_object_inputs(scene, source)
     if scene.coastal is None:
         return
     from .arrays import check_coastal_inputs  # noqa: PLC0415
@@ -947,6 +1013,47 @@ def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
                              f"[coastal] offshore side, {depth:.3g} m, within {OPEN_SEA_DEPTH_MATCH:.0%} with waves = "
                              f"'open sea' (one dispersion relation on both sides of the join), got "
                              f"{scene.ocean.wave_depth:g}")
+
+
+def check_object_inputs(scene: Scene, source: str = "<dict>") -> None:
+    """Each ``[[objects]]`` mesh read and checked, and fitted in the water body; SceneError naming the key.
+
+    An object must stay above the bottom (its lowest point above −[water] depth at its
+    pose), a floating one needs a closed hull that reaches below its waterline, and a
+    texture needs the mesh's texture coordinates.
+    """
+    if not scene.objects:
+        return
+    from ..io.meshes import MeshProblem, read_mesh  # noqa: PLC0415
+    from ..io.paths import PathProblem, check_input_file  # noqa: PLC0415
+
+    for index, obj in enumerate(scene.objects):
+        where = f"{source}: [[objects]] {obj.name}"
+        try:
+            mesh = read_mesh(obj.mesh)
+        except MeshProblem as exc:
+            raise SceneError(f"{where} mesh: {exc}") from None
+        if obj.albedo_texture is not None:
+            try:
+                check_input_file(obj.albedo_texture, 1 << 28)
+            except PathProblem as exc:
+                raise SceneError(f"{where} albedo_texture: {exc}") from None
+            if mesh.uv is None:
+                raise SceneError(f"{where} albedo_texture: the mesh {obj.mesh} has no texture coordinates")
+        low = obj.position[2] + obj.scale * float(mesh.vertices[:, 2].min())
+        # NOTE: a tilted or floating object may swing its lowest point down by up to its largest radius.
+        radius = obj.scale * float(((mesh.vertices**2).sum(axis=1) ** 0.5).max())
+        deepest = obj.position[2] - radius if (obj.pitch or obj.roll or obj.floating) else low
+        if scene.coastal is None and deepest <= -scene.water.depth:
+            raise SceneError(f"{where} position: the object can reach down to z = {deepest:g} m, the bottom is at "
+                             f"{-scene.water.depth:g} m; expected it to fit the water depth ([water] depth)")
+        if obj.floating:
+            if not mesh.closed:
+                raise SceneError(f"{where} mesh: a floating object needs a closed (watertight) hull; {obj.mesh} "
+                                 f"has open edges")
+            if low >= 0.0:
+                raise SceneError(f"{where} position: a floating object's hull must reach below its waterline "
+                                 f"(z = 0 of the mesh), its lowest point is at z = {low:g} m")
 
 
 def with_view(scene: Scene, view: str, source: str = "command line") -> Scene:

@@ -48,7 +48,9 @@ class WaterBody:
 
     def __init__(self, scene: Scene):
         self.scene = scene
-        self.sea = SeaSurface(scene.ocean)
+        from .objects import scene_wakes  # noqa: PLC0415
+
+        self.sea = SeaSurface(scene.ocean, scene_wakes(scene))  # the sea with the wakes of moving objects
         mesh = scene.mesh
         self.camera_path = None
         self._moved_grid: tuple[float, RadialGrid] | None = None  # (t, grid) of the last grid_at(t)

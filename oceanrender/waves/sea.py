@@ -167,10 +167,12 @@ class SeaSurface:
     spectrum's slope budget.
     """
 
-    def __init__(self, ocean: OceanSettings):
+    def __init__(self, ocean: OceanSettings, disturbances=()):
         self.settings = ocean
         self.spectrum = directional_spectrum(ocean)
-        self._query_stacks: tuple[float, dict] | None = None  # the level stacks of the last time surface_sample saw
+        self._query_stacks: tuple[tuple, dict] | None = None  # level stacks of the last (t, spacing) queried
+        #: Disturbances added to the sea (ship wakes): objects with ``sample(x, y, t) -> (η, ∂η/∂x, ∂η/∂y)``.
+        self.disturbances: tuple = tuple(disturbances)
         self.levels: tuple[CascadeLevels, ...] = ()
         if ocean.model == "FFT":
             sizes = cascade_patch_sizes(ocean.patch_size, ocean.cascades)
@@ -309,15 +311,23 @@ class SeaSurface:
         that spacing resolves (:mod:`.lod`); ``None`` keeps every wave.
         """
         if self.cascades is None:
-            return self._sample_components(x, y, t)
-        height, dx, dy, sx, sy, xx, yy, xy = self._weighted(np.asarray(x, float), np.asarray(y, float), t, spacing,
-                                                             slice(0, 8))
+            if not self.disturbances:
+                return self._sample_components(x, y, t)
+            f = self._component_fields(x, y, t)
+            height, dx, dy, sx, sy = f.height, f.displacement_x, f.displacement_y, f.slope_x, f.slope_y
+            xx, yy, xy = f.jacobian_xx - 1, f.jacobian_yy - 1, f.jacobian_xy
+        else:
+            height, dx, dy, sx, sy, xx, yy, xy = self._weighted(np.asarray(x, float), np.asarray(y, float), t,
+                                                                 spacing, slice(0, 8))
         if self.fractal is not None:
             gamma = self.settings.fractal_gamma
             weight = 1.0 if spacing is None else _fractal_weight(spacing, self.fractal.spacing)
             detail, detail_x, detail_y = self.fractal.sample(x, y)
             height = height + gamma * weight * detail  # ζ = η + γ η_fractal
             sx, sy = sx + gamma * weight * detail_x, sy + gamma * weight * detail_y
+        for disturbance in self.disturbances:  # ship wakes, at the rest points (their own slopes are small)
+            eta, ex, ey = disturbance.sample(x, y, t)
+            height, sx, sy = height + eta, sx + ex, sy + ey
         jxx, jyy = xx + 1, yy + 1
         return SurfacePoints(np.stack([dx, dy, height], axis=-1), _normals(jxx, jyy, xy, sx, sy), jxx * jyy - xy * xy)
 
@@ -332,32 +342,46 @@ class SeaSurface:
         xx, yy, xy = self._weighted(np.asarray(x, float), np.asarray(y, float), t, spacing, slice(5, 8))
         return (1 + xx) * (1 + yy) - xy * xy
 
-    def surface_sample(self, x: NDArray, y: NDArray, t: float) -> SurfaceSample:
-        """The sea at rest points (x, y) [m] at time t [s] as a height query needs it (every wave kept).
+    def surface_sample(self, x: NDArray, y: NDArray, t: float, spacing: float | None = None,
+                       disturbed: bool = True) -> SurfaceSample:
+        """The sea at rest points (x, y) [m] at time t [s] as a height query needs it.
 
         Displacement (Dx, Dy), height η [m], slope ∂η/∂x₀, ∂η/∂y₀ and the displacement
-        gradient ∇D [-], for :func:`~.query.query_height` (through :meth:`sampler`).
+        gradient ∇D [-], for :func:`~.query.query_height` (through :meth:`sampler`), with
+        the :attr:`disturbances` (wakes) added. ``spacing`` [m]: keep only the waves a grid
+        of that spacing resolves (FFT sea; :mod:`.lod`), None: every wave. ``disturbed`` False: the
+        sea alone (what a floating object rides: not its own wake).
         """
         x, y = np.asarray(x, float), np.asarray(y, float)
+        sample = self._undisturbed_sample(x, y, t, spacing)
+        for disturbance in self.disturbances if disturbed else ():
+            eta, sx, sy = disturbance.sample(x, y, t)
+            sample = SurfaceSample(sample.displacement, sample.height + eta,
+                                   sample.slope + np.stack([sx, sy], -1), sample.displacement_gradient)
+        return sample
+
+    def _undisturbed_sample(self, x: NDArray, y: NDArray, t: float, spacing: float | None) -> SurfaceSample:
         if self.cascades is None:
             f = self._component_fields(x, y, t)
             gradient = np.stack([np.stack([f.jacobian_xx - 1, f.jacobian_xy], -1),
                                  np.stack([f.jacobian_xy, f.jacobian_yy - 1], -1)], -2)
             return SurfaceSample(np.stack([f.displacement_x, f.displacement_y], -1), np.asarray(f.height, float),
                                  np.stack([f.slope_x, f.slope_y], -1), gradient)
-        if self._query_stacks is None or self._query_stacks[0] != t:
-            self._query_stacks = (t, {})  # Newton's steps query one time often: synthesise each level once
-        height, dx, dy, sx, sy, xx, yy, xy = self._weighted(x, y, t, None, slice(0, 8), self._query_stacks[1])
-        if self.fractal is not None:
+        if self._query_stacks is None or self._query_stacks[0] != (t, spacing):
+            self._query_stacks = ((t, spacing), {})  # Newton's steps query one time often: synthesise levels once
+        cell = None if spacing is None else np.full(x.shape, float(spacing))
+        height, dx, dy, sx, sy, xx, yy, xy = self._weighted(x, y, t, cell, slice(0, 8), self._query_stacks[1])
+        if self.fractal is not None and spacing is None:
             gamma = self.settings.fractal_gamma
             detail, detail_x, detail_y = self.fractal.sample(x, y)
             height, sx, sy = height + gamma * detail, sx + gamma * detail_x, sy + gamma * detail_y  # ζ = η + γ η_f
         gradient = np.stack([np.stack([xx, xy], -1), np.stack([xy, yy], -1)], -2)
         return SurfaceSample(np.stack([dx, dy], -1), height, np.stack([sx, sy], -1), gradient)
 
-    def sampler(self, t: float) -> Sampler:
-        """The sea at time t [s] as a :data:`~.query.Sampler` of rest points, for height queries."""
-        return lambda x, y: self.surface_sample(x, y, t)
+    def sampler(self, t: float, spacing: float | None = None, disturbed: bool = True) -> Sampler:
+        """The sea at time t [s] as a :data:`~.query.Sampler` of rest points, for height queries
+        (``spacing`` [m]: the waves a grid of that spacing resolves, None: all; ``disturbed``: with wakes)."""
+        return lambda x, y: self.surface_sample(x, y, t, spacing, disturbed)
 
     def _component_fields(self, x, y, t):
         ocean = self.settings

@@ -2,6 +2,7 @@
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from oceanrender.scene import SceneError, load_scene, scene_from_dict, with_overrides
@@ -295,3 +296,39 @@ def test_the_second_order_courant_bound_follows_the_scheme(scheme, cfl, accepted
         with pytest.raises(SceneError) as error:
             scene_from_dict(data, "t.toml")
         assert "cfl" in str(error.value) and "\n" not in str(error.value)
+
+
+def _object_scene(tmp_path, entry: str, extra: str = "") -> Path:
+    import trimesh
+
+    trimesh.creation.box(extents=(4.0, 2.0, 2.0)).export(tmp_path / "box.ply")
+    open_box = trimesh.creation.box(extents=(4.0, 2.0, 2.0))
+    open_box.update_faces(np.arange(len(open_box.faces)) != 0)  # one triangle removed: not watertight
+    open_box.export(tmp_path / "open.ply")
+    path = tmp_path / "objects.toml"
+    path.write_text(f'name = "objects"\n{extra}[[objects]]\nname = "box"\n{entry}')
+    return path
+
+
+@pytest.mark.parametrize("entry, extra, expected", [
+    ('mesh = "nothing.ply"\n', "", "[[objects]] box mesh: cannot open"),
+    ('mesh = "box.ply"\nmaterial = "wood"\n', "", "[objects[0]] material: Input should be 'diffuse'"),
+    ('mesh = "box.ply"\nposition = [0, 0, nan]\n', "", "[objects[0]] position[2]: Input should be a finite number"),
+    ('mesh = "box.ply"\nposition = [0, 0, -9.5]\n', "[water]\ndepth = 10.0\n",
+     "[[objects]] box position: the object can reach down to z = -10.5 m"),
+    ('mesh = "open.ply"\nfloating = true\n', "", "[[objects]] box mesh: a floating object needs a closed"),
+    ('mesh = "box.ply"\nfloating = true\npitch = 5.0\n', "", "pitch and roll come from the sea"),
+    ('mesh = "box.ply"\nposition = [0, 0, 2.0]\nfloating = true\n', "", "must reach below its waterline"),
+    ('mesh = "box.ply"\n[[objects]]\nname = "box"\nmesh = "box.ply"\n', "", "box appear(s) more than once"),
+])
+def test_object_errors_are_one_line_naming_the_key(tmp_path, entry, extra, expected):
+    path = _object_scene(tmp_path, entry, extra)
+    with pytest.raises(SceneError) as info:
+        load_scene(path)
+    message = str(info.value)
+    assert message.startswith(str(path)) and expected in message and "\n" not in message, message
+
+
+def test_object_paths_are_relative_to_the_scene_file(tmp_path):
+    path = _object_scene(tmp_path, 'mesh = "box.ply"\n')
+    assert load_scene(path).objects[0].mesh == str(tmp_path / "box.ply")
