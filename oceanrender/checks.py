@@ -124,7 +124,7 @@ def check_memory(scene: Scene, source: str, renders: bool = True, available: flo
 
 
 def check_tables(scene: Scene, source: str) -> None:
-    """Read and check the water's tables (IOP table, components) so a bad one fails before any work."""
+    """Read and check the scene's tables (IOP table, components, objects' reflectances) before any work."""
     from .optics.scene_water import water_composition  # noqa: PLC0415
     from .optics.tables import SpectralDataError  # noqa: PLC0415
     from .optics.water import pure_seawater_iops  # noqa: PLC0415
@@ -137,6 +137,14 @@ def check_tables(scene: Scene, source: str) -> None:
         water_composition(scene)
     except (SpectralDataError, ValueError) as exc:
         raise SceneError(f"{source}: [composition]: {exc}") from None
+    from .optics.tables import read_reflectance_table  # noqa: PLC0415
+
+    for obj in scene.objects:
+        if obj.albedo_spectrum is not None:
+            try:
+                read_reflectance_table(obj.albedo_spectrum)
+            except SpectralDataError as exc:
+                raise SceneError(f"{source}: [[objects]] {obj.name} albedo_spectrum: {exc}") from None
 
 
 def check_sea(scene: Scene, source: str) -> None:

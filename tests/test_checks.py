@@ -87,3 +87,13 @@ def test_the_free_space_floors_follow_the_files_a_frame_writes():
     coast = scene_from_dict({"name": "c", "coastal": {"cells": [40, 30], "size": [8.0, 6.0]}})
     per_cell = 3 * 8 + 5 * 4  # the .npz's h, hu, hv (float64) and the EXR's five float32 channels
     assert checks.coastal_frame_bytes(coast) >= 40 * 30 * per_cell + checks.SLACK_BYTES
+
+
+def test_an_object_reflectance_outside_0_1_is_refused_before_any_work(tmp_path):
+    import trimesh
+
+    trimesh.creation.box(extents=(1.0, 1.0, 1.0)).export(tmp_path / "box.ply")
+    (tmp_path / "paint.csv").write_text("# bad paint\n# reflectance [-]\n# wavelength_nm,reflectance\n360,0.5\n830,1.5\n")
+    s = scene(objects=[{"name": "b", "mesh": str(tmp_path / "box.ply"), "albedo_spectrum": str(tmp_path / "paint.csv")}])
+    with pytest.raises(SceneError, match=r"\[\[objects\]\] b albedo_spectrum: .*reflectance must lie in \[0, 1\]"):
+        checks.check_tables(s, "s.toml")

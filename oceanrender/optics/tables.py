@@ -104,3 +104,17 @@ def read_spectral_table(path: str | Path, required: tuple[str, ...] = (), cover:
     if missing:
         raise SpectralDataError(f"{path}: missing column(s) {', '.join(missing)}; has {', '.join(columns)}")
     return SpectralTable(wavelengths=wavelengths, columns=columns, header="\n".join(header[:-1]))
+
+
+def read_reflectance_table(path: str | Path) -> SpectralTable:
+    """A reflectance spectrum [-] (column ``reflectance``, each value in [0, 1]) over 360-830 nm [nm].
+
+    The same table format as ``spectra/`` (a ``#`` header with units and source, then
+    ``wavelength_nm,reflectance``), e.g. an object's ``albedo_spectrum``.
+    """
+    table = read_spectral_table(path, required=("reflectance",))
+    r = table.columns["reflectance"]
+    if not (np.all(r >= 0) and np.all(r <= 1)):
+        raise SpectralDataError(f"{path}: reflectance must lie in [0, 1] at every wavelength, got {r.min():g} to "
+                                f"{r.max():g}")
+    return table

@@ -2,12 +2,13 @@
 
 | ``material``      | Mitsuba plugin    | keys used                                   |
 |-------------------|-------------------|---------------------------------------------|
-| ``diffuse``       | ``diffuse``       | ``albedo`` or ``albedo_texture``            |
+| ``diffuse``       | ``diffuse``       | ``albedo``, ``albedo_texture`` or ``albedo_spectrum`` |
 | ``rough plastic`` | ``roughplastic``  | ``albedo`` / ``albedo_texture``, ``roughness`` (Beckmann α) |
 | ``conductor``     | ``roughconductor``| ``conductor`` (Mitsuba's measured n, k), ``roughness`` |
 | ``dielectric``    | ``roughdielectric``| ``ior``, ``roughness``                     |
 
-Albedos are sRGB values (or an sRGB image); in the spectral variants Mitsuba turns
+Albedos are a measured reflectance spectrum (``albedo_spectrum``, used as it is) or sRGB
+values (or an sRGB image); in the spectral variants Mitsuba turns
 them into smooth reflectance spectra (Jakob & Hanika 2019, "A low-dimensional
 function space for efficient spectral upsampling", Comput. Graph. Forum 38(2)).
 Objects carry no medium: the part of a hull under the water is reached by rays
@@ -21,7 +22,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..optics.tables import read_reflectance_table
 from ..scene import ObjectSettings
+from .scene import irregular_spectrum
 
 __all__ = ["object_id", "object_bsdf", "object_mesh", "update_object_positions"]
 
@@ -34,6 +37,9 @@ def object_id(name: str) -> str:
 def _albedo(obj: ObjectSettings) -> dict:
     if obj.albedo_texture is not None:
         return {"type": "bitmap", "filename": obj.albedo_texture, "raw": False}
+    if obj.albedo_spectrum is not None:  # a measured reflectance, as it is (no upsampling)
+        table = read_reflectance_table(obj.albedo_spectrum)
+        return irregular_spectrum(table.wavelengths, table.columns["reflectance"])
     return {"type": "rgb", "value": [float(v) for v in obj.albedo]}
 
 

@@ -336,6 +336,10 @@ class ObjectSettings(_Section):
     albedo_texture: str | None = Field(None, min_length=1, max_length=4096,
                                        description="an sRGB image instead of albedo (the mesh needs texture "
                                                    "coordinates), relative to the scene file")
+    albedo_spectrum: str | None = Field(None, min_length=1, max_length=4096,
+                                        description="a reflectance spectrum instead of albedo: a table "
+                                                    "wavelength_nm,reflectance over 360-830 nm, relative to the "
+                                                    "scene file")
     roughness: float = Field(0.1, ge=0.001, le=1, description="Beckmann α of rough plastic, conductor, dielectric [-]")
     conductor: Literal["Ag", "Al", "Au", "Cr", "Cu"] = Field("Al", description="the metal of a conductor")
     ior: float = Field(1.5, ge=1.0, le=3.0, description="refractive index of a dielectric [-]")
@@ -344,8 +348,11 @@ class ObjectSettings(_Section):
     def _keys_of_its_kind(self) -> "ObjectSettings":
         if self.floating and (self.pitch != 0 or self.roll != 0):
             raise ValueError(f"{self.name}: pitch and roll come from the sea for a floating object; leave them out")
-        if self.albedo_texture is not None and self.material not in ("diffuse", "rough plastic"):
-            raise ValueError(f"{self.name}: albedo_texture applies to 'diffuse' and 'rough plastic' only")
+        for key in ("albedo_texture", "albedo_spectrum"):
+            if getattr(self, key) is not None and self.material not in ("diffuse", "rough plastic"):
+                raise ValueError(f"{self.name}: {key} applies to 'diffuse' and 'rough plastic' only")
+        if self.albedo_texture is not None and self.albedo_spectrum is not None:
+            raise ValueError(f"{self.name}: give albedo_texture or albedo_spectrum, not both")
         return self
 
 
@@ -984,7 +991,7 @@ def resolve_scene_paths(data: dict, folder: Path) -> None:
     objects = data.get("objects")
     if isinstance(objects, list):
         for entry in objects:
-            for key in ("mesh", "albedo_texture"):
+            for key in ("mesh", "albedo_texture", "albedo_spectrum"):
                 value = entry.get(key) if isinstance(entry, dict) else None
                 if isinstance(value, str) and value and "\x00" not in value:
                     entry[key] = os.path.abspath(folder / value)

@@ -53,3 +53,26 @@ def test_a_box_across_the_surface_is_seen_from_above_and_below(tmp_path):
         ratio_box = with_box[centre][..., 0].mean() / with_box[centre][..., 2].mean()
         ratio_sea = without[centre][..., 0].mean() / without[centre][..., 2].mean()
         assert ratio_box > 1.5 * ratio_sea, (name, ratio_box, ratio_sea)
+
+
+def test_a_measured_albedo_spectrum_is_used_as_it_is(tmp_path):
+    import mitsuba as mi
+
+    from oceanrender.render.objects import object_bsdf
+    from oceanrender.runtime.variants import activate_variant
+
+    activate_variant("auto")
+    trimesh.creation.box(extents=(1.0, 1.0, 1.0)).export(tmp_path / "box.ply")
+    wl = np.arange(360.0, 831.0, 10.0)
+    r = 0.05 + 0.8 * (wl > 600)  # a red paint: dark below 600 nm, bright above
+    (tmp_path / "paint.csv").write_text("# test paint\n# reflectance [-]\n# wavelength_nm,reflectance\n"
+                                        + "".join(f"{w:g},{v:g}\n" for w, v in zip(wl, r)))
+    obj = scene_from_dict({"name": "m", "objects": [{"name": "b", "mesh": str(tmp_path / "box.ply"),
+                                                     "albedo_spectrum": str(tmp_path / "paint.csv")}]}).objects[0]
+    bsdf = mi.load_dict(object_bsdf(obj))
+    si = mi.SurfaceInteraction3f()
+    si.wi = mi.Vector3f(0, 0, 1)
+    si.wavelengths = mi.Spectrum([450.0, 550.0, 650.0, 700.0])
+    ctx = mi.BSDFContext()
+    value = np.array(bsdf.eval(ctx, si, mi.Vector3f(0, 0, 1))).ravel() * np.pi  # Lambert: f = R/π at normal
+    np.testing.assert_allclose(value, [0.05, 0.05, 0.85, 0.85], rtol=1e-5)  # float32 evaluation

@@ -63,3 +63,21 @@ def test_a_camera_above_the_water_renders_from_the_air(tmp_path):
     _, meta = _render(tmp_path, "above", "[camera]\nposition = [0.0, 0.0, 6.0]\ntarget = [0.0, 10.0, 0.0]\nfov = 60.0",
                       resolution=(32, 18), spp=4)
     assert meta["camera_in_water"] in (False, "false")
+
+
+def test_a_camera_path_through_the_surface_renders_each_frame_from_its_side(tmp_path):
+    # Keys from 2 m above to 2 m under the still level over 4 frames at 2 fps: the first two frames are in
+    # the air, the last two in the water (a calm 1 m/s sea is ±0.05 m high), none refused, none non-finite.
+    keys = "".join(f'[[camera.keys]]\ntime = {t}\nposition = [0.0, 0.0, {z}]\ntarget = [0.0, 10.0, {z - 1.0}]\n'
+                   f'fov = 70.0\n' for t, z in ((0.0, 2.0), (1.5, -2.0)))
+    path = tmp_path / "dive.toml"
+    path.write_text(f'name = "dive"\n[output]\nframes = [0, 4]\nfps = 2.0\nresolution = [24, 16]\nspp = 4\n'
+                    f'directory = "{tmp_path / "out"}"\n[ocean]\nwind_speed = 1.0\nresolution = 64\n'
+                    f'[sun]\nelevation = 50.0\nazimuth = 180.0\n{keys}')
+    assert main(["render", str(path), "--no-progress"]) == 0
+    sides = []
+    for frame in range(4):
+        channels, meta = read_exr(tmp_path / "out" / "dive" / f"frame_{frame:04d}.exr")
+        assert int(meta["repaired_pixels"]) == 0 and np.all(np.isfinite(channels["Y"]))
+        sides.append(meta["camera_in_water"] in (True, "true"))
+    assert sides == [False, False, True, True]
