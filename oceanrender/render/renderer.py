@@ -206,6 +206,34 @@ def object_shapes(settings: Scene, objects) -> dict:
     return {object_id(g.name): object_mesh(by_name[g.name], g.positions, g.faces, g.uv) for g in objects}
 
 
+#: Id of the open sea's optional seafloor; its height above the water body's bottom face [m] (beyond
+#: Mitsuba's ray offset, ~1e-4 (1 + |p|) m, at the depths of a scene).
+SEAFLOOR_ID = "seafloor"
+SEAFLOOR_LIFT_M = 0.02
+
+
+def seafloor_shapes(settings: Scene, geometry: FrameGeometry) -> dict:
+    """``{"seafloor": rectangle}``: the open sea's flat Lambertian bottom (``[water] bottom_albedo``), or none.
+
+    A ``rectangle`` (intersected in its own frame, so exact however large) just above the
+    water body's bottom face, spanning the body's bottom (from the first frame's vertices,
+    99 % of it). No medium: rays reach it in the water and stay there.
+    """
+    albedo = settings.water.bottom_albedo
+    if albedo is None or settings.coastal is not None:
+        return {}
+    import mitsuba as mi  # noqa: PLC0415
+
+    depth = settings.water.depth
+    bottom = geometry.positions[geometry.positions[:, 2] <= -depth + 1e-3 * (1.0 + depth)]
+    lo, hi = bottom[:, :2].min(axis=0), bottom[:, :2].max(axis=0)
+    centre, half = 0.5 * (lo + hi), 0.495 * (hi - lo)
+    to_world = mi.ScalarTransform4f().translate([float(centre[0]), float(centre[1]), -depth + SEAFLOOR_LIFT_M]) \
+        @ mi.ScalarTransform4f().scale([float(half[0]), float(half[1]), 1.0])
+    return {SEAFLOOR_ID: {"type": "rectangle", "to_world": to_world,
+                          "bsdf": {"type": "diffuse", "reflectance": {"type": "uniform", "value": float(albedo)}}}}
+
+
 def terrain_shapes(terrain: Terrain | None) -> dict:
     """The scene-dict entries of a body's terrain: ``{"terrain": mesh}``, or none (open sea)."""
     return {} if terrain is None else {TERRAIN_ID: terrain_shape(terrain)}
@@ -325,6 +353,7 @@ class WaterRenderer:
             "sky": sunsky_emitter(settings.sun),
             WATER_ID: mesh,
             **terrain_shapes(terrain),
+            **seafloor_shapes(settings, geometry),
             **object_shapes(settings, objects),
         })
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),

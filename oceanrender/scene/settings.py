@@ -261,6 +261,9 @@ class WaterSettings(_Section):
                                        "to the scene file")
     jerlov_type: Literal["IB", "II", "III", "1C", "3C", "5C"] | None = Field(
         None, description="a Jerlov water type's measured IOPs (Williamson & Hollins 2022) instead of the table")
+    bottom_albedo: float | None = Field(None, ge=0, le=1, description="open sea: an opaque Lambertian seafloor "
+                                                                     "of this reflectance on the water body's flat "
+                                                                     "bottom [-]; left out: none (deep water)")
     surface_roughness: float | Literal["auto"] = Field(
         "auto", description="Beckmann α of the surface [-], or 'auto' for the slopes of the waves finer than the mesh"
     )

@@ -81,3 +81,17 @@ def test_a_camera_path_through_the_surface_renders_each_frame_from_its_side(tmp_
         assert int(meta["repaired_pixels"]) == 0 and np.all(np.isfinite(channels["Y"]))
         sides.append(meta["camera_in_water"] in (True, "true"))
     assert sides == [False, False, True, True]
+
+
+def test_an_open_sea_seafloor_is_seen_from_under_the_water(tmp_path):
+    # 3 m under a 6 m deep sea, looking 45° down at an opaque Lambertian bottom: a bright floor (albedo 0.5)
+    # returns far more light than a black one (albedo 0); 16 spp noise is a few % of the mean of 200 pixels.
+    lower = []
+    for albedo in (0.0, 0.5):
+        channels, meta = _render(tmp_path, f"floor_{int(albedo * 10)}",
+                                 "[camera]\nposition = [0.0, 0.0, -3.0]\ntarget = [0.0, 5.0, -8.0]\nfov = 60.0",
+                                 f"[ocean]\nwind_speed = 3.0\nresolution = 64\n[water]\ndepth = 6.0\n"
+                                 f"bottom_albedo = {albedo}\n", resolution=(32, 24), spp=16)
+        assert meta["camera_in_water"] in (True, "true") and int(meta["repaired_pixels"]) == 0
+        lower.append(float(channels["Y"][12:, :].mean()))
+    assert lower[1] > 2.0 * lower[0], lower
