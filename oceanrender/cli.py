@@ -82,7 +82,14 @@ def build_parser() -> argparse.ArgumentParser:
                     "OUT/cascade_I/; with --ply also the closed water-body mesh of each patch.")
     geometry.add_argument("scene", type=Path, help="scene file (TOML)")
     geometry.add_argument("--frames", type=_frame_range, metavar="A:B", help="half-open frame range (default: the scene's)")
-    geometry.add_argument("--out", type=Path, metavar="DIR", required=True, help="export folder")
+    geometry.add_argument("--out", type=Path, metavar="DIR", help="export folder of the maps (and --ply meshes)")
+    geometry.add_argument("--usd", type=Path, metavar="FILE",
+                          help="also (or only) write the animated sea, camera, sun and objects as a USD stage "
+                               "(.usda, .usdc, .usd; metres, Z up; docs/geometry.md)")
+    geometry.add_argument("--usd-extent", type=float, default=200.0, metavar="M",
+                          help="width of the USD sea grid, centred under the camera [m] (default 200)")
+    geometry.add_argument("--usd-points", type=int, default=256, metavar="N",
+                          help="points per side of the USD sea grid (default 256)")
     geometry.add_argument("--ply", action="store_true", help="also write mesh_NNNN.ply per frame")
     geometry.add_argument("--camera-mesh", action="store_true",
                           help="also write the camera-following radial mesh and its per-ring LOD weights "
@@ -420,8 +427,14 @@ def cmd_geometry(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     if args.frames is not None:
         scene = with_overrides(scene, "command line", output={"frames": args.frames})
+    if args.out is None and args.usd is None:
+        raise UserError("geometry: give --out DIR (wave maps), --usd FILE (USD stage), or both")
+    usd_grid = _check_usd_options(scene, args) if args.usd is not None else None
+    if args.out is None:
+        return _write_usd(scene, args, usd_grid)
     if scene.ocean.model != "FFT":
-        raise UserError(f"{args.scene}: [ocean] model: geometry export needs 'FFT', got {scene.ocean.model!r}")
+        raise UserError(f"{args.scene}: [ocean] model: the wave maps need 'FFT', got {scene.ocean.model!r} "
+                        "(--usd alone works for every model)")
     from .checks import geometry_frame_bytes  # noqa: PLC0415
 
     check_run(scene, str(args.scene), args.out, "--out", tables=False, sea=args.ply, renders=args.camera_mesh,
@@ -445,6 +458,32 @@ def cmd_geometry(args: argparse.Namespace) -> int:
         written += 2
         print(f"camera-following mesh -> {ply}, {table}")
     print(f"wrote {written} file(s) for frames {start}:{end}")
+    return _write_usd(scene, args, usd_grid) if usd_grid is not None else 0
+
+
+def _check_usd_options(scene: Scene, args: argparse.Namespace):
+    """The USD sea grid of --usd-extent/--usd-points, and --usd checked, before any work."""
+    from .export.usd_stage import USD_SUFFIXES, sea_grid  # noqa: PLC0415
+
+    if args.usd.suffix.lower() not in USD_SUFFIXES:
+        raise UserError(f"--usd: expected a file ending in {', '.join(USD_SUFFIXES)}, got {str(args.usd)!r}")
+    if args.usd.is_dir():
+        raise UserError(f"--usd: {args.usd} is a folder; expected a file name")
+    if scene.coastal is not None:
+        raise UserError(f"{args.scene}: [coastal]: --usd exports the open sea only")
+    if not (math.isfinite(args.usd_extent) and args.usd_extent > 0):
+        raise UserError(f"--usd-extent: expected a width > 0 [m], got {args.usd_extent!r}")
+    if not 2 <= args.usd_points <= 4096:
+        raise UserError(f"--usd-points: expected 2 to 4096 points per side, got {args.usd_points!r}")
+    return sea_grid(scene, args.usd_extent, args.usd_points)
+
+
+def _write_usd(scene: Scene, args: argparse.Namespace, grid) -> int:
+    from .export.usd_stage import write_usd_stage  # noqa: PLC0415
+
+    counts = write_usd_stage(scene, args.usd, grid, range(*scene.output.frames))
+    print(f"wrote {args.usd}: {counts['frames']} frame(s), {counts['points']} sea points, "
+          f"{counts['objects']} object(s), camera and sun")
     return 0
 
 

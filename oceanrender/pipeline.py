@@ -365,6 +365,8 @@ class Sequence:
             spectral = spectral_frame(self.renderer.last_bands, metadata)
         channels = {name: np.asarray(xyz[..., i], np.float32) for i, name in enumerate("XYZ")}
         channels.update({name: np.asarray(rgb[..., i], np.float32) for i, name in enumerate("RGB")})
+        if self.scene.output.passes:
+            channels.update(self.renderer.passes(self.scene.output.passes))
         rendered = RenderedFrame(frame=frame, channels=channels, metadata=metadata, rgb8=encode_sRGB_8bit(rgb),
                                  spectral=spectral, repaired=repaired, seconds=own)
         own["vision"] += time.perf_counter() - tac
@@ -438,13 +440,21 @@ def spectral_frame(band_integrals: np.ndarray, metadata: dict) -> tuple[dict[str
     return channels, meta
 
 
+def pass_channels(passes: tuple[str, ...]) -> tuple[str, ...]:
+    """The EXR channels of the render passes ``passes`` (:mod:`oceanrender.render.passes`)."""
+    from .render.passes import PASS_CHANNELS  # noqa: PLC0415
+
+    return tuple(channel for name in passes for channel in PASS_CHANNELS[name])
+
+
 def coastal_store(out_dir: str | Path) -> Path:
     """Where a coastal scene's simulation keeps its per-frame fields: ``<out_dir>/coastal``."""
     return Path(out_dir) / "coastal"
 
 
 def frames_to_render(out_dir: str | Path, frames: tuple[int, int], size: tuple[int, int], report: SequenceReport,
-                     on_frame: Callable[[int, float, bool], None] | None = None) -> list[int]:
+                     on_frame: Callable[[int, float, bool], None] | None = None,
+                     passes: tuple[str, ...] = ()) -> list[int]:
     """The frames of [start, end) not yet intact in ``out_dir`` (the others go to ``report.skipped``).
 
     Deletes the temporaries a killed run left first; ``on_frame(frame, 0, True)``
@@ -454,7 +464,7 @@ def frames_to_render(out_dir: str | Path, frames: tuple[int, int], size: tuple[i
     todo = []
     for frame in range(*frames):
         paths = frame_paths(out_dir, frame)
-        if frame_is_complete(paths.exr, paths.png, size):
+        if frame_is_complete(paths.exr, paths.png, size, pass_channels(passes)):
             report.skipped.append(frame)
             if on_frame:
                 on_frame(frame, 0.0, True)
@@ -498,7 +508,7 @@ def render_sequence(scene: Scene, out_dir: str | Path, variant: str, frames: tup
     """
     size = tuple(resolution or scene.output.resolution)
     report = SequenceReport(variant=variant)
-    todo = frames_to_render(out_dir, frames or scene.output.frames, size, report, on_frame)
+    todo = frames_to_render(out_dir, frames or scene.output.frames, size, report, on_frame, scene.output.passes)
     if not todo:
         return report
     tic = time.perf_counter()

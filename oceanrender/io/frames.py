@@ -82,13 +82,16 @@ def write_png(path: str | Path, rgb8: np.ndarray) -> None:
         iio.imwrite(tmp, rgb8, extension=".png")
 
 
-def frame_is_complete(exr_path: str | Path, png_path: str | Path, size: tuple[int, int]) -> bool:
+def frame_is_complete(exr_path: str | Path, png_path: str | Path, size: tuple[int, int],
+                      extra_channels: tuple[str, ...] = ()) -> bool:
     """Whether a frame's EXR and PNG both exist and read back intact at ``size``.
 
     Parameters
     ----------
     size : (int, int)
         Expected (width, height) [pixels].
+    extra_channels : tuple of str
+        Channels the EXR must also hold (the scene's render passes).
     """
     width, height = size
     if not (Path(exr_path).is_file() and Path(png_path).is_file()):
@@ -98,8 +101,9 @@ def frame_is_complete(exr_path: str | Path, png_path: str | Path, size: tuple[in
         image = iio.imread(png_path, plugin="pillow")
     except Exception:  # noqa: BLE001 (any unreadable file means: render again)
         return False
-    if any(name not in channels for name in FRAME_CHANNELS):
+    needed = (*FRAME_CHANNELS, *extra_channels)
+    if any(name not in channels for name in needed):
         return False
-    if any(channels[name].shape != (height, width) for name in FRAME_CHANNELS):
+    if any(channels[name].shape != (height, width) for name in needed):
         return False
     return image.shape[:2] == (height, width)

@@ -195,7 +195,7 @@ def render_distributed(scene: Scene, out_dir: str | Path, variant: str, client, 
     size = tuple(resolution or scene.output.resolution)
     spp = int(spp or scene.output.spp)
     report = SequenceReport(variant=variant)
-    todo = frames_to_render(out_dir, frames or scene.output.frames, size, report, on_frame)
+    todo = frames_to_render(out_dir, frames or scene.output.frames, size, report, on_frame, scene.output.passes)
     if not todo:
         return report
     store = simulate_coastal(scene, out_dir, todo, report)

@@ -308,6 +308,9 @@ class WaterRenderer:
     camera_position: np.ndarray | None = None
     #: Whether the last frame :meth:`render_xyz` rendered had its camera under the water.
     last_camera_in_water: bool = False
+    #: Refractive index of the water [-] and the Mitsuba ids of the objects, for :meth:`passes`.
+    n_water: float = 1.333
+    object_ids: tuple[str, ...] = ()
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -359,7 +362,8 @@ class WaterRenderer:
         return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
                    bands=settings.output.spectral_bands, in_water=in_water,
                    in_water_fraction=render.in_water_fraction if two_pass else 1.0,
-                   camera_position=np.asarray(settings.camera.position, float))
+                   camera_position=np.asarray(settings.camera.position, float), n_water=water_ior(settings),
+                   object_ids=tuple(object_id(o.name) for o in objects))
 
     def integrators(self) -> list:
         """The Mitsuba integrators a frame uses: the scene's, then the in-water pass's (two-pass frames)."""
@@ -416,6 +420,14 @@ class WaterRenderer:
         for integrator in self.integrators():
             if getattr(integrator, "clamps", False):
                 integrator.set_in_water_clamp(float(value))
+
+    def passes(self, names: tuple[str, ...]) -> dict[str, np.ndarray]:
+        """The render passes ``names`` of the frame last rendered, as EXR channels (:mod:`.passes`)."""
+        from .passes import first_hit_passes  # noqa: PLC0415
+
+        return first_hit_passes(self.scene, names, sensor=1 if self.last_camera_in_water else 0, water_id=WATER_ID,
+                                object_ids=self.object_ids, n_water=self.n_water,
+                                camera_in_water=self.last_camera_in_water, foam_attribute=FOAM_ATTRIBUTE)
 
     def update_objects(self, objects) -> None:
         """Move the ``[[objects]]`` to their poses of a frame (:class:`~oceanrender.surface.objects.ObjectGeometry`)."""

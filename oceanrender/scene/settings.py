@@ -64,6 +64,17 @@ class OutputSettings(_Section):
     directory: str = Field("outputs", min_length=1, description="output root; frames go to <directory>/<scene name>/")
     spectral_bands: int = Field(0, ge=0, le=470, description="> 0: also write frame_NNNN_spectral.exr with this many "
                                                              "equal bands of mean radiance over 360-830 nm")
+    passes: tuple[Literal["Z", "N", "P", "water", "foam", "objects", "water_path"], ...] = Field(
+        (), description="render passes written into the frame EXR (docs/passes.md): Z, N, P, water, foam, objects, "
+                        "water_path")
+
+    @field_validator("passes")
+    @classmethod
+    def _passes_once(cls, value: tuple[str, ...]) -> tuple[str, ...]:
+        twice = sorted({p for p in value if value.count(p) > 1})
+        if twice:
+            raise ValueError(f"each pass once; {', '.join(twice)} given more than once")
+        return value
 
     @field_validator("frames")
     @classmethod

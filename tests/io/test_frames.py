@@ -38,6 +38,10 @@ def test_frame_complete_only_when_both_files_read_back(tmp_path, rng):
     assert not frame_is_complete(exr, png, (6, 4))
     write_png(png, (rng.random((4, 6, 3)) * 255).astype(np.uint8))
     assert frame_is_complete(exr, png, (6, 4))
+    assert not frame_is_complete(exr, png, (6, 4), ("depth.Z",)), "a frame without a pass it asks for is redone"
+    write_exr(exr, {**frame_channels(rng), "depth.Z": rng.random((4, 6))})
+    write_png(png, (rng.random((4, 6, 3)) * 255).astype(np.uint8))
+    assert frame_is_complete(exr, png, (6, 4), ("depth.Z",))
     assert not frame_is_complete(exr, png, (8, 4)), "wrong size must not count as done"
     exr.write_bytes(exr.read_bytes()[:40])  # a truncated file, as after a crash
     assert not frame_is_complete(exr, png, (6, 4))
