@@ -137,6 +137,13 @@ def check_tables(scene: Scene, source: str) -> None:
         water_composition(scene)
     except (SpectralDataError, ValueError) as exc:
         raise SceneError(f"{source}: [composition]: {exc}") from None
+    if scene.environment is not None:
+        from .render.environment import EnvironmentMapProblem, read_environment_map  # noqa: PLC0415
+
+        try:
+            read_environment_map(scene.environment.map)
+        except EnvironmentMapProblem as exc:
+            raise SceneError(f"{source}: [environment] map: {exc}") from None
     from .optics.tables import read_reflectance_table  # noqa: PLC0415
 
     for obj in scene.objects:

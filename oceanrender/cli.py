@@ -611,6 +611,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     import numpy as np  # noqa: PLC0415
 
     scene = load_scene(args.scene)
+    _sunsky_only(scene, args)
     check_run(scene, str(args.scene), args.out, "--out", sea=False, renders=False)
     runtime = activate(args.variant or scene.render.variant)
     from .export.optics_report import write_optics_report  # noqa: PLC0415
@@ -667,8 +668,16 @@ def _realtime_scene(args: argparse.Namespace) -> Scene:
     output = {key: value for key, value in (("frames", getattr(args, "frames", None)), ("spp", args.spp),
                                             ("resolution", args.resolution)) if value is not None}
     scene = with_overrides(scene, "command line", output=output)
+    _sunsky_only(scene, args)
     check_run(scene, str(args.scene), args.out, "--out")
     return scene
+
+
+def _sunsky_only(scene: Scene, args: argparse.Namespace) -> None:
+    """The LUTs, references and the optics report use sunsky's sun and sky irradiance: refuse a map's scene."""
+    if scene.environment is not None:
+        raise UserError(f"{args.scene}: [environment]: {args.command} works under sunsky's sun and sky only; "
+                        "leave [environment] out")
 
 
 def _reference_renderer(scene: Scene, variant: str, frames: tuple[int, int], out: Path):

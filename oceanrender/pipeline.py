@@ -178,6 +178,7 @@ class Sequence:
                                             objects=self.objects.frame(self.time_of(first_frame)))
         self.vision = vision_for_scene(scene)
         self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
+        self._map_illuminance: float | None = None  # [lx], of an [environment] map, measured once
 
     def _measure_white(self, frame: int) -> None:
         """The adapting white [cd m⁻²] under the sun of ``frame`` (:attr:`sun_angles`), measured once per frame."""
@@ -291,10 +292,24 @@ class Sequence:
             "sun_elevation_deg": f"{self.sun_angles.elevation:.6g}",
             "sun_azimuth_deg": f"{self.sun_angles.azimuth:.6g}",
             "sun_motion": self._sun_motion_label(),
+            "sky": self._sky_label(),
             "denoiser": "Intel Open Image Denoise (pyoidn), colour only, HDR" if self.scene.render.denoise else "none",
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
+
+    def _sky_label(self) -> str:
+        """What lights the frame: sunsky, or the environment map with its scale and horizontal illuminance."""
+        env = self.scene.environment
+        if env is None:
+            return "sunsky (Hosek-Wilkie)"
+        from .render.environment import environment_scale, map_illuminance  # noqa: PLC0415
+
+        if self._map_illuminance is None:
+            self._map_illuminance = map_illuminance(env.map, environment_scale(self.scene))
+        sun = " + sunsky's sun" if env.sun else ""
+        return (f"environment map {Path(env.map).name} (scale {environment_scale(self.scene):.6g}, rotation "
+                f"{env.rotation:g} deg; {self._map_illuminance:.6g} lx on a horizontal plane){sun}")
 
     def _adaptation_label(self, target: float | None) -> str:
         """How the adaptation luminance was set."""

@@ -17,8 +17,10 @@ from ..optics.water import MediumOptics, WaterIOPs
 from ..scene import Scene
 from ..scene.motion import CameraPose, SunAngles
 from ..surface.frame import FrameGeometry, Terrain
+from .environment import sky_emitters
 from .objects import object_id, object_mesh, update_object_positions
 from .scene import (
+    K_M,
     FILM_RANGE_NM,
     ROUGHNESS_ATTRIBUTE,
     apply_camera,
@@ -27,7 +29,6 @@ from .scene import (
     meter_reading,
     perspective_sensor,
     sun_direction,
-    sunsky_emitter,
     volumetric_integrator,
     water_medium,
     water_surface_bsdf,
@@ -35,8 +36,6 @@ from .scene import (
     xyz_film,
 )
 
-#: Maximum luminous efficacy of radiation for photopic vision [lm W⁻¹] (CIE 2004 / SI definition of the candela).
-K_M = 683.0
 
 #: Identifier of the water body in the Mitsuba scene.
 WATER_ID = "water"
@@ -335,7 +334,8 @@ class WaterRenderer:
         medium = load_water_medium(water_medium(iops))
         mesh = water_mesh(faces, geometry, bsdf, medium)
         sun_sampling = {}
-        if settings.render.sun_sampling and sun_lobe_alpha is not None:
+        has_sun = settings.environment is None or settings.environment.sun  # a map alone has no sun to sample
+        if settings.render.sun_sampling and sun_lobe_alpha is not None and has_sun:
             sun_sampling = {"sun": sun_direction(settings.sun.elevation, settings.sun.azimuth),
                             "water_ior": water_ior(settings), "sun_lobe_alpha": float(sun_lobe_alpha),
                             "in_water_clamp": float(in_water_clamp)}
@@ -353,7 +353,7 @@ class WaterRenderer:
             # NOTE: the same camera in the water's medium; a frame whose camera is under the surface renders
             # with it (camera_in_water), so its rays start in the water.
             UNDERWATER_SENSOR: {**sensor, "medium": medium},
-            "sky": sunsky_emitter(settings.sun),
+            **sky_emitters(settings),
             WATER_ID: mesh,
             **terrain_shapes(terrain),
             **seafloor_shapes(settings, geometry),
@@ -475,8 +475,9 @@ class WhiteMeter:
     def __init__(self, settings: Scene, spp: int | None = None):
         import mitsuba as mi  # noqa: PLC0415
 
-        self.scene = mi.load_dict(white_plane_meter(sunsky_emitter(settings.sun), xyz_film(1, 1),
-                                                    int(spp or settings.render.white_spp)))
+        emitters = sky_emitters(settings)  # sunsky, or an environment map (and its sun)
+        meter = white_plane_meter(emitters.pop("sky"), xyz_film(1, 1), int(spp or settings.render.white_spp))
+        self.scene = mi.load_dict({**meter, **emitters})
         self.params = mi.traverse(self.scene)
 
     def point_sun(self, elevation: float, azimuth: float) -> None:

@@ -59,6 +59,10 @@ def band_channel_name(index: int) -> str:
     return f"b{index:03d}"
 
 
+#: Maximum luminous efficacy of radiation for photopic vision [lm W⁻¹] (CIE 2004 / SI definition of the candela).
+K_M = 683.0
+
+
 def xyz_film(width: int, height: int, bands: int = 0) -> dict:
     """``specfilm`` whose three channels are ∫L x̄ dλ, ∫L ȳ dλ, ∫L z̄ dλ (and optionally ``bands`` more).
 

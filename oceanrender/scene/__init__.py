@@ -4,6 +4,7 @@ beyond its inputs and imports only ``oceanrender.io``."""
 
 from .settings import (
     CameraSettings,
+    EnvironmentSettings,
     FoamSettings,
     OBJECT_MATERIALS,
     MeshSettings,
@@ -23,6 +24,6 @@ from .settings import (
 )
 
 __all__ = [
-    "CameraSettings", "FoamSettings", "MeshSettings", "OBJECT_MATERIALS", "ObjectSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
+    "CameraSettings", "EnvironmentSettings", "FoamSettings", "MeshSettings", "OBJECT_MATERIALS", "ObjectSettings", "OceanSettings", "OutputSettings", "RenderSettings", "Scene", "SceneError",
     "SunSettings", "VisionSettings", "WaterSettings", "load_scene", "scene_from_dict", "with_overrides", "with_view",
 ]

@@ -439,6 +439,30 @@ class SolarClockSettings(_Section):
         return tuple(clock.at(t))
 
 
+class EnvironmentSettings(_Section):
+    """``[environment]``: an equirectangular HDR image as the sky instead of ``sunsky``'s (docs/environment.md).
+
+    The map's top row is the zenith, its bottom row the nadir; column u (0 at the left
+    edge, 1 at the right) lies at azimuth 360° u + ``rotation``, clockwise from north (+y).
+    """
+
+    map: str = Field(..., min_length=1, max_length=4096,
+                     description="equirectangular EXR or Radiance .hdr, 2:1, relative to the scene file")
+    scale: float | None = Field(None, gt=0, le=1e9, description="radiance per map unit: an RGB of 1 is Mitsuba's "
+                                                                 "upsampled white of about 1 W m⁻² sr⁻¹ nm⁻¹")
+    illuminance: float | None = Field(None, gt=0, le=2e5, description="instead of scale: the map's illuminance on "
+                                                                       "a horizontal plane [lx] (the sun not counted)")
+    rotation: float = Field(0.0, ge=-360, le=360, description="azimuth of the map's left edge, clockwise from north "
+                                                              "[deg]")
+    sun: bool = Field(False, description="add the [sun]'s solar disk (sunsky's sun, no sky) to the map")
+
+    @model_validator(mode="after")
+    def _one_scale(self) -> "EnvironmentSettings":
+        if self.scale is not None and self.illuminance is not None:
+            raise ValueError("give scale or illuminance, not both")
+        return self
+
+
 class SunSettings(_Section):
     """Sun and sky: Mitsuba's ``sunsky`` (Hosek & Wilkie 2012/2013).
 
@@ -750,9 +774,16 @@ class Scene(_Section):
     composition: CompositionSettings | None = None
     coastal: CoastalSettings | None = None
     sun: SunSettings = SunSettings()
+    environment: EnvironmentSettings | None = None
     camera: CameraSettings = CameraSettings()
     vision: VisionSettings = VisionSettings()
     objects: tuple[ObjectSettings, ...] = Field((), max_length=64, description="[[objects]]: meshes in the scene")
+
+    @model_validator(mode="after")
+    def _environment_with_a_still_sun(self) -> "Scene":
+        if self.environment is not None and self.sun.animated:
+            raise ValueError("[environment]: a map is a still sky; its [sun] cannot move ([[sun.keys]], [sun.clock])")
+        return self
 
     @field_validator("objects")
     @classmethod
@@ -1002,6 +1033,11 @@ def resolve_scene_paths(data: dict, folder: Path) -> None:
         value = water.get("iop_table")
         if isinstance(value, str) and "/" in value and "\x00" not in value:
             water["iop_table"] = os.path.abspath(folder / value)
+    environment = data.get("environment")
+    if isinstance(environment, dict):
+        value = environment.get("map")
+        if isinstance(value, str) and value and "\x00" not in value:
+            environment["map"] = os.path.abspath(folder / value)
     objects = data.get("objects")
     if isinstance(objects, list):
         for entry in objects:
