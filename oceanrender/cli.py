@@ -471,11 +471,10 @@ def _check_usd_options(scene: Scene, args: argparse.Namespace):
         raise UserError(f"--usd: {args.usd} is a folder; expected a file name")
     if scene.coastal is not None:
         raise UserError(f"{args.scene}: [coastal]: --usd exports the open sea only")
-    if not (math.isfinite(args.usd_extent) and args.usd_extent > 0):
-        raise UserError(f"--usd-extent: expected a width > 0 [m], got {args.usd_extent!r}")
-    if not 2 <= args.usd_points <= 4096:
-        raise UserError(f"--usd-points: expected 2 to 4096 points per side, got {args.usd_points!r}")
-    return sea_grid(scene, args.usd_extent, args.usd_points)
+    try:
+        return sea_grid(scene, args.usd_extent, args.usd_points)
+    except ValueError as exc:  # "extent: ..." or "points: ...", the option's own name after --usd-
+        raise UserError(f"--usd-{exc}") from None
 
 
 def _write_usd(scene: Scene, args: argparse.Namespace, grid) -> int:
@@ -502,14 +501,12 @@ def cmd_probe(args: argparse.Namespace) -> int:
     if args.out is not None and args.out.is_dir():
         raise UserError(f"--out: {args.out} is a folder; expected a CSV file name")
     from .scene.motion import frame_times  # noqa: PLC0415
-    from .surface.objects import scene_wakes  # noqa: PLC0415
+    from .surface.objects import scene_sea  # noqa: PLC0415
     from .waves.probe import probe_sea  # noqa: PLC0415
-    from .waves.sea import SeaSurface  # noqa: PLC0415
 
     frames = range(*scene.output.frames)
     x, y = (list(v) for v in zip(*args.at))
-    sea = SeaSurface(scene.ocean, scene_wakes(scene))  # the sea the water body is made of: wakes included
-    result = probe_sea(sea, x, y, frame_times(scene.output.frames, scene.output.fps))
+    result = probe_sea(scene_sea(scene), x, y, frame_times(scene.output.frames, scene.output.fps))
     rows = [",".join(PROBE_COLUMNS)]
     for i, frame in enumerate(frames):
         for j in range(len(x)):

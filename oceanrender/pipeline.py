@@ -305,8 +305,8 @@ class Sequence:
             return "sunsky (Hosek-Wilkie)"
         from .render.environment import environment_scale, map_illuminance  # noqa: PLC0415
 
-        if self._map_illuminance is None:
-            self._map_illuminance = map_illuminance(env.map, environment_scale(self.scene))
+        if self._map_illuminance is None:  # the given illuminance is what the scale was set to give
+            self._map_illuminance = env.illuminance or map_illuminance(env.map, environment_scale(self.scene))
         sun = " + sunsky's sun" if env.sun else ""
         return (f"environment map {Path(env.map).name} (scale {environment_scale(self.scene):.6g}, rotation "
                 f"{env.rotation:g} deg; {self._map_illuminance:.6g} lx on a horizontal plane){sun}")

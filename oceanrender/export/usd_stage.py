@@ -110,12 +110,11 @@ def write_usd_stage(scene: Scene, path: str | Path, grid: SeaGrid, frames: range
     from ..io.frames import atomic_path  # noqa: PLC0415
     from ..render.scene import sun_direction  # noqa: PLC0415
     from ..scene.motion import camera_motion, static_camera_pose, sun_motion  # noqa: PLC0415
-    from ..surface.objects import SceneObjects, scene_wakes  # noqa: PLC0415
-    from ..waves.sea import SeaSurface  # noqa: PLC0415
+    from ..surface.objects import SceneObjects, scene_sea  # noqa: PLC0415
 
     path = Path(path)
     fps = scene.output.fps
-    sea = SeaSurface(scene.ocean, scene_wakes(scene))
+    sea = scene_sea(scene)
     objects = SceneObjects(scene, sea)
     camera_path, sun_path = camera_motion(scene), sun_motion(scene)
     x, y = grid.rest_points()

@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 __all__ = [
     "N_AIR",
     "N_WATER",
+    "refract",
     "refracted_cosine",
     "critical_cosine",
     "reflectance_components_Fresnel",
@@ -301,3 +302,28 @@ def fresnel_correction(F: ArrayLike, gamma: ArrayLike) -> NDArray[np.float64]:
     if np.any(~(gamma > 0.0)):
         raise ValueError("gamma must be positive")
     return F**gamma  # Eq. 20 of [1]
+
+
+def refract(directions: ArrayLike, normals: ArrayLike, eta: float) -> NDArray[np.float64]:
+    """Refracted unit directions (vector Snell's law); NaN under total internal reflection.
+
+    Parameters
+    ----------
+    directions : array_like (..., 3)
+        Unit propagation directions of the incident rays.
+    normals : array_like (..., 3)
+        Unit normals on the side the rays come from (d·n ≤ 0).
+    eta : float
+        Ratio n₁/n₂ of the incident to the transmitting refractive index [-].
+
+    References
+    ----------
+    .. [1] Pharr, Jakob & Humphreys (2023), §9.3.2.
+    """
+    d = np.asarray(directions, dtype=np.float64)
+    n = np.asarray(normals, dtype=np.float64)
+    cos_i = -np.sum(d * n, axis=-1, keepdims=True)
+    sin2_t = eta**2 * np.maximum(0.0, 1.0 - cos_i**2)
+    cos_t = np.sqrt(np.maximum(0.0, 1.0 - sin2_t))
+    t = eta * d + (eta * cos_i - cos_t) * n  # Snell's law in vector form, §9.3.2 of [1]
+    return np.where(sin2_t <= 1.0, t, np.nan)

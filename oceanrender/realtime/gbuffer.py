@@ -23,7 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .luts import refract
+from ..optics.fresnel import refract
+
 
 __all__ = ["Camera", "camera_for_scene", "GBuffer", "trace_gbuffer", "KIND_SKY", "KIND_WATER", "KIND_LAND",
            "KIND_OTHER"]

@@ -66,7 +66,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..optics.fourflux import four_flux
-from ..optics.fresnel import N_AIR, fresnel_correction, reflectance_Fresnel, refracted_cosine
+from ..optics.fresnel import N_AIR, fresnel_correction, reflectance_Fresnel, refract, refracted_cosine
 from ..optics.streams import StreamCoefficients, stream_coefficients, sunlit_coefficients
 from ..vision.model import VisionModel
 
@@ -79,7 +79,6 @@ __all__ = [
     "VisionState",
     "WaterColumn",
     "spectra_to_XYZ",
-    "refract",
     "upwelling_radiance",
     "bake_T0",
     "bake_T1",
@@ -401,31 +400,6 @@ def spectra_to_XYZ(radiance: ArrayLike, wavelengths: ArrayLike) -> NDArray[np.fl
     cmfs = colour.MSDS_CMFS[CIE1931]
     xyz_bar = np.asarray(cmfs[wavelengths], dtype=np.float64)  # (W, 3), interpolated at λ
     return K_M * np.tensordot(np.asarray(radiance, dtype=np.float64), xyz_bar * step, axes=(-1, 0))  # Eq. 7.1 of [1]
-
-
-def refract(directions: ArrayLike, normals: ArrayLike, eta: float) -> NDArray[np.float64]:
-    """Refracted unit directions (vector Snell's law); NaN under total internal reflection.
-
-    Parameters
-    ----------
-    directions : array_like (..., 3)
-        Unit propagation directions of the incident rays.
-    normals : array_like (..., 3)
-        Unit normals on the side the rays come from (d·n ≤ 0).
-    eta : float
-        Ratio n₁/n₂ of the incident to the transmitting refractive index [-].
-
-    References
-    ----------
-    .. [1] Pharr, Jakob & Humphreys (2023), §9.3.2.
-    """
-    d = np.asarray(directions, dtype=np.float64)
-    n = np.asarray(normals, dtype=np.float64)
-    cos_i = -np.sum(d * n, axis=-1, keepdims=True)
-    sin2_t = eta**2 * np.maximum(0.0, 1.0 - cos_i**2)
-    cos_t = np.sqrt(np.maximum(0.0, 1.0 - sin2_t))
-    t = eta * d + (eta * cos_i - cos_t) * n  # Snell's law in vector form, §9.3.2 of [1]
-    return np.where(sin2_t <= 1.0, t, np.nan)
 
 
 def column_coefficients(column: WaterColumn) -> StreamCoefficients | None:

@@ -22,8 +22,10 @@ from pathlib import Path
 
 import numpy as np
 
+from ..io.paths import PathProblem, check_input_file
 from ..scene import Scene
-from .scene import sunsky_emitter
+from .irradiance import sky_irradiance_spectra
+from .scene import K_M, irregular_spectrum, meter_reading, sun_direction, sunsky_emitter, white_plane_meter, xyz_film
 
 __all__ = ["ENVIRONMENT_SUFFIXES", "EnvironmentMapProblem", "read_environment_map", "sky_emitters",
            "environment_scale", "map_illuminance"]
@@ -48,8 +50,6 @@ def read_environment_map(path: str | Path) -> np.ndarray:
     """
     import mitsuba as mi  # noqa: PLC0415
 
-    from ..io.paths import PathProblem, check_input_file  # noqa: PLC0415
-
     try:
         path = check_input_file(path, MAX_MAP_BYTES)
     except PathProblem as exc:
@@ -62,7 +62,7 @@ def read_environment_map(path: str | Path) -> np.ndarray:
         raise EnvironmentMapProblem(f"{path}: not a readable image ({str(exc).splitlines()[0][:200]})") from None
     if image.ndim == 2:
         image = image[..., None]
-    if image.shape[2] not in (1,) and image.shape[2] < 3:
+    if image.shape[2] == 2:
         raise EnvironmentMapProblem(f"{path}: expected 1 (grey) or 3+ (RGB) channels, got {image.shape[2]}")
     image = np.repeat(image, 3, axis=2) if image.shape[2] == 1 else image[..., :3]
     height, width = image.shape[:2]
@@ -87,8 +87,6 @@ def _envmap(path: str, scale: float, rotation: float) -> dict:
 def map_illuminance(path: str, scale: float = 1.0, spp: int = CALIBRATION_SPP) -> float:
     """Illuminance of the map on a horizontal plane [lx]: π × the luminance of a white Lambertian plane under it."""
     import mitsuba as mi  # noqa: PLC0415
-
-    from .scene import K_M, meter_reading, white_plane_meter, xyz_film  # noqa: PLC0415
 
     meter = mi.load_dict(white_plane_meter(_envmap(path, scale, 0.0), xyz_film(1, 1), spp))
     luminance = K_M * float(np.asarray(meter_reading(mi.render(meter, seed=0))).reshape(-1)[1])  # Y = K_m ∫ L ȳ dλ
@@ -132,21 +130,12 @@ def sun_emitter(sun) -> dict:
     (:func:`~oceanrender.render.irradiance.sky_irradiance_spectra`); a delta light: the solar
     disk itself is not seen, its reflections only through the water's roughness.
     """
-    from .irradiance import sky_irradiance_spectra  # noqa: PLC0415
-    from .scene import irregular_spectrum, sun_direction  # noqa: PLC0415
-
-    direct = _sun_irradiance(sun.elevation, sun.azimuth, sun.turbidity, sun.ground_albedo, sun.sun_scale,
-                             sky_irradiance_spectra)
     towards = -sun_direction(sun.elevation, sun.azimuth)
     return {"type": "directional", "direction": [float(v) for v in towards],
-            "irradiance": irregular_spectrum(np.array(SUN_WAVELENGTHS_NM), np.maximum(direct, 0.0))}
+            "irradiance": irregular_spectrum(np.array(SUN_WAVELENGTHS_NM), np.maximum(_sun_irradiance(sun), 0.0))}
 
 
 @functools.lru_cache(maxsize=8)
-def _sun_irradiance(elevation, azimuth, turbidity, ground_albedo, sun_scale, measure) -> np.ndarray:
-    from types import SimpleNamespace  # noqa: PLC0415
-
-    sun = SimpleNamespace(elevation=elevation, azimuth=azimuth, turbidity=turbidity, ground_albedo=ground_albedo,
-                          sun_scale=sun_scale, sky_scale=1.0)
-    direct, _ = measure(sun, np.array(SUN_WAVELENGTHS_NM), spp=SUN_SPP)
-    return direct
+def _sun_irradiance(sun) -> np.ndarray:
+    """Direct-normal irradiance of ``sunsky``'s sun at :data:`SUN_WAVELENGTHS_NM` [W m⁻² nm⁻¹], measured once per sun."""
+    return sky_irradiance_spectra(sun, np.array(SUN_WAVELENGTHS_NM), spp=SUN_SPP)[0]

@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..optics.fresnel import refract
+
 __all__ = ["PASSES", "PASS_CHANNELS", "FAR_Z", "first_hit_passes"]
 
 #: The passes ``[output] passes`` may name, and their EXR channels.
@@ -109,11 +111,10 @@ def _water_path(scene, ray, si, on_water, n_water: float, camera_in_water: bool,
     # Refract through the water surface's shading normal (Snell, air -> water) and trace to the next surface;
     # where that would leave the water (a shading normal far from the facet's), through the facet's normal.
     d = _numpy3(ray.d)
-    geometric = _numpy3(si.n)
-    geometric = np.where((np.sum(geometric * d, axis=-1) > 0)[:, None], -geometric, geometric)
-    t = _refract(d, _numpy3(si.sh_frame.n), 1.0 / n_water)
+    geometric = _facing(_numpy3(si.n), d)
+    t = refract(d, _facing(_numpy3(si.sh_frame.n), d), 1.0 / n_water)
     wrong_side = np.sum(t * geometric, axis=-1) >= 0
-    t[wrong_side] = _refract(d[wrong_side], geometric[wrong_side], 1.0 / n_water)
+    t[wrong_side] = refract(d[wrong_side], geometric[wrong_side], 1.0 / n_water)
     inside = mi.Ray3f(si.spawn_ray(mi.Vector3f(t[:, 0], t[:, 1], t[:, 2])))
     second = scene.ray_intersect(inside, on_water)
     hit = np.array(second.is_valid(), dtype=bool)
@@ -121,10 +122,6 @@ def _water_path(scene, ray, si, on_water, n_water: float, camera_in_water: bool,
     return np.where(np.array(on_water, dtype=bool), length, 0.0)
 
 
-def _refract(d: np.ndarray, n: np.ndarray, eta: float) -> np.ndarray:
-    """Unit directions (P, 3) refracted from ``d`` through normals ``n`` (turned to face ``d``), η = n1/n2 [-]."""
-    n = np.where((np.sum(n * d, axis=-1) > 0)[:, None], -n, n)
-    cos_i = -np.sum(n * d, axis=-1)
-    k = 1.0 - eta**2 * (1.0 - cos_i**2)  # Snell's law; k ≥ 0 from air into water
-    t = eta * d + (eta * cos_i - np.sqrt(np.maximum(k, 0.0)))[:, None] * n
-    return t / np.linalg.norm(t, axis=-1, keepdims=True)
+def _facing(normals: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """``normals`` turned to the side the rays ``d`` come from (d·n ≤ 0)."""
+    return np.where((np.sum(normals * d, axis=-1) > 0)[:, None], -normals, normals)

@@ -11,6 +11,7 @@ water body is built from. Everything is a function of t alone.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -23,7 +24,7 @@ from ..waves.floating import floating_pose, footprint
 from ..waves.sea import SeaSurface
 from ..waves.wakes import ShipWake, ship_wake, submerged_source
 
-__all__ = ["ObjectGeometry", "SceneObjects", "attitude_matrix", "object_centre", "scene_wakes"]
+__all__ = ["ObjectGeometry", "SceneObjects", "attitude_matrix", "object_centre", "scene_sea", "scene_wakes"]
 
 #: Finest wave a floating hull feels, as a fraction of its waterline length [-]: shorter waves average out.
 FLOAT_SPACING_FRACTION = 0.125
@@ -48,6 +49,12 @@ def attitude_matrix(heading_deg: float, pitch_deg: float, roll_deg: float) -> ND
     return yaw @ pitch @ roll
 
 
+@functools.lru_cache(maxsize=64)
+def _mesh(path: str) -> TriangleMesh:
+    """An object's mesh, read once per process (the wakes and the posed objects both need it)."""
+    return read_mesh(path)
+
+
 def object_centre(obj: ObjectSettings):
     """t [s] → (x, y) of the object's origin [m]: ``position`` at t = 0, moving along the heading at ``speed``."""
     h = math.radians(obj.heading)
@@ -62,18 +69,32 @@ def scene_wakes(scene: Scene) -> tuple[ShipWake, ...]:
     for obj in scene.objects:
         if not obj.wake or obj.speed <= 0:
             continue
-        source = submerged_source(obj.scale * read_mesh(obj.mesh).vertices, -obj.position[2])
+        source = submerged_source(obj.scale * _mesh(obj.mesh).vertices, -obj.position[2])
         if source is not None:
             wakes.append(ship_wake(source, obj.speed, scene.ocean.wave_depth, obj.heading, object_centre(obj)))
     return tuple(wakes)
+
+
+def _hull_footprint(obj: ObjectSettings, mesh: TriangleMesh) -> tuple[NDArray, float]:
+    """(sample points (P, 2) over the submerged part's footprint [m], the finest wave it feels [m])."""
+    vertices = obj.scale * mesh.vertices
+    below = vertices[vertices[:, 2] < -obj.position[2]]
+    lo, hi = below[:, :2].min(axis=0), below[:, :2].max(axis=0)
+    return footprint((lo[0], hi[0]), (lo[1], hi[1])), FLOAT_SPACING_FRACTION * float(hi[0] - lo[0])
+
+
+def scene_sea(scene: Scene) -> SeaSurface:
+    """The scene's open sea with the wakes of its moving objects: what the water body, probes and exports read."""
+    return SeaSurface(scene.ocean, scene_wakes(scene))
 
 
 class SceneObjects:
     """The scene's objects, read once; :meth:`frame` poses them at a time."""
 
     def __init__(self, scene: Scene, sea: SeaSurface | None):
-        self.items: list[tuple[ObjectSettings, TriangleMesh]] = [(o, read_mesh(o.mesh)) for o in scene.objects]
+        self.items: list[tuple[ObjectSettings, TriangleMesh]] = [(o, _mesh(o.mesh)) for o in scene.objects]
         self.sea = sea
+        self._hulls = {o.name: _hull_footprint(o, m) for o, m in self.items if o.floating}
         self._last: tuple[float, list[ObjectGeometry]] | None = None  # a frame is posed once (meter, render)
 
     def pose(self, obj: ObjectSettings, mesh: TriangleMesh, t: float) -> tuple[NDArray, NDArray]:
@@ -81,11 +102,7 @@ class SceneObjects:
         centre = object_centre(obj)
         z, pitch, roll = obj.position[2], obj.pitch, obj.roll
         if obj.floating and self.sea is not None:
-            vertices = obj.scale * mesh.vertices
-            below = vertices[vertices[:, 2] < -obj.position[2]]
-            lo, hi = below[:, :2].min(axis=0), below[:, :2].max(axis=0)
-            points = footprint((lo[0], hi[0]), (lo[1], hi[1]))
-            spacing = FLOAT_SPACING_FRACTION * float(hi[0] - lo[0])
+            points, spacing = self._hulls[obj.name]
             state = floating_pose(self.sea, points, centre, obj.heading, t, obj.response_time, spacing)
             z, pitch, roll = obj.position[2] + state.heave, state.pitch, state.roll
         return attitude_matrix(obj.heading, pitch, roll), np.array([*centre(t), z])

@@ -34,7 +34,7 @@ from ..scene import Scene
 from ..waves.fft_ocean import OceanFields, OceanGrid
 from ..optics.foam import fresh_foam_decay_time
 from ..waves.foam import crest_acceleration_threshold, two_stage_foam_step
-from ..waves.sea import SeaSurface, SurfacePoints
+from ..waves.sea import SurfacePoints
 from .frame import FrameGeometry, Terrain
 from .patch_mesh import water_body_faces, water_body_vertices
 from .radial_mesh import RadialGrid, horizon_radius, radial_body_faces, radial_body_vertices
@@ -48,9 +48,9 @@ class WaterBody:
 
     def __init__(self, scene: Scene):
         self.scene = scene
-        from .objects import scene_wakes  # noqa: PLC0415
+        from .objects import scene_sea  # noqa: PLC0415
 
-        self.sea = SeaSurface(scene.ocean, scene_wakes(scene))  # the sea with the wakes of moving objects
+        self.sea = scene_sea(scene)  # the sea with the wakes of moving objects
         mesh = scene.mesh
         self.camera_path = None
         self._moved_grid: tuple[float, RadialGrid] | None = None  # (t, grid) of the last grid_at(t)
