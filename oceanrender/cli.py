@@ -153,7 +153,28 @@ def build_parser() -> argparse.ArgumentParser:
     reference.add_argument("--resolution", type=_resolution, metavar="WxH", help="image size in pixels")
     reference.add_argument("--noise-floor", action="store_true",
                            help="render the first frame again with another seed and report the reference's noise")
+    reference.add_argument("--denoise", action="store_true",
+                           help="denoise the references (Intel Open Image Denoise, colour only; the noise floor's "
+                                "second render too)")
     reference.add_argument("--variant", metavar="V", help="Mitsuba variant ('auto' by default)")
+
+    validate = commands.add_parser(
+        "validate-shader", help="grade a GLSL fragment shader against a reference set (headless OpenGL)",
+        description="Run FRAGMENT (GLSL 3.30 core, the interface of oceanrender/realtime/shaders/water.frag: "
+                    "G-buffer textures, LUT textures, uniforms; docs/realtime.md) on every frame of a reference set "
+                    "written by `oceanrender reference`, on a headless OpenGL context (EGL: Mesa's software "
+                    "rasteriser without a GPU), and write its images, dE2000 maps against the references and against "
+                    "the numpy model, worst regions, the gamma fit and report.json/report.md. A shader that does not "
+                    "compile: one line per GLSL error, exit status 2. FRAGMENT 'shipped' is the reference shader.")
+    validate.add_argument("fragment", metavar="FRAGMENT", help="fragment shader file, or 'shipped'")
+    validate.add_argument("--reference", type=Path, metavar="DIR", required=True,
+                          help="reference set from `oceanrender reference`")
+    validate.add_argument("--out", type=Path, metavar="DIR",
+                          help="output folder (default: DIR/shader_<name of FRAGMENT>)")
+    validate.add_argument("--luts", type=Path, metavar="DIR", help="LUT folder (default: the reference set's)")
+    validate.add_argument("--ripples", type=float, default=1.0, metavar="K",
+                          help="ripple strength uniform u_ripple_strength (default 1: as baked; 0: none)")
+    validate.add_argument("--gamma", type=float, metavar="G", help="u_gamma (default: the LUT set's)")
 
     movie = commands.add_parser(
         "movie", help="an MP4 and a contact sheet of a finished sequence",
@@ -777,14 +798,14 @@ def cmd_reference(args: argparse.Namespace) -> int:
           f"{spp} spp, variant {runtime.variant} -> {out}", flush=True)
 
     identity = {"scene": scene.name, "spp": spp, "resolution": f"{width}x{height}", "variant": runtime.variant,
-                "seed": scene.render.seed}
+                "seed": scene.render.seed, "denoised": bool(args.denoise)}
     frames = {}
     for frame in range(start, end):
         tac = time.perf_counter()
         xyz = read_reference_xyz(out / f"reference_{frame:04d}.exr", {**identity, "frame": frame})
         repaired = 0
         if xyz is None:
-            xyz, repaired = renderer.render_xyz(frame)
+            xyz, repaired = renderer.render_xyz(frame, denoise=args.denoise)
             note = f"rendered in {time.perf_counter() - tac:.1f} s"
         else:
             note = "reused the stored reference"
@@ -808,13 +829,14 @@ def cmd_reference(args: argparse.Namespace) -> int:
         print(f"frame {frame}: dE2000 water mean {comparison.water.mean:.2f}, p95 {comparison.water.p95:.2f}, "
               f"max {comparison.water.max:.2f} (gamma {luts.gamma:g})", flush=True)
 
-    fit = fit_gamma([fit_view(c.terms, c.reference_rgb) for c in comparisons.values()], gamma_start=luts.gamma)
+    fit = fit_gamma([fit_view(c.terms, c.reference_rgb, phi.display) for c in comparisons.values()],
+                    gamma_start=luts.gamma)
     fitted = {frame: c.at(fit.gamma) for frame, c in comparisons.items()}
     for frame in comparisons:
         write_fitted(out, frame, comparisons[frame], fitted[frame], {**identity, "frame": frame})
     noise = None
     if args.noise_floor:
-        noise = reference_noise(renderer, start, comparisons[start], phi)
+        noise = reference_noise(renderer, start, comparisons[start], phi, denoise=args.denoise)
     report = reference_report(scene, (start, end), identity, lut_folder, phi, luts, fit, comparisons, fitted,
                               {frame: entry[1] for frame, entry in frames.items()}, noise)
     write_report(out, report)
@@ -825,9 +847,59 @@ def cmd_reference(args: argparse.Namespace) -> int:
           + f"; report {out / 'report.md'} ({time.perf_counter() - tic:.0f} s)")
     return 0
 
+def cmd_validate_shader(args: argparse.Namespace) -> int:
+    from .realtime.files import shader_report, write_shader_frame, write_shader_report  # noqa: PLC0415
+    from .realtime.glsl import GLContext, ShaderError, shipped_shader  # noqa: PLC0415
+    from .realtime.validate import ShaderRunner, read_reference_set, source_digest, validate_shader  # noqa: PLC0415
+
+    fragment = shipped_shader() if args.fragment == "shipped" else Path(args.fragment)
+    try:
+        source = fragment.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise UserError(f"FRAGMENT {fragment}: cannot read it ({exc.__class__.__name__}: {exc})") from None
+    if not (math.isfinite(args.ripples) and args.ripples >= 0):
+        raise UserError(f"--ripples: expected a finite number >= 0, got {args.ripples}")
+    if args.gamma is not None and not (math.isfinite(args.gamma) and args.gamma > 0):
+        raise UserError(f"--gamma: expected a finite number > 0, got {args.gamma}")
+    try:
+        references = read_reference_set(args.reference, args.luts)
+    except (ValueError, KeyError, OSError) as exc:
+        raise UserError(f"--reference {args.reference}: {one_line(exc)}") from None
+    out = args.out or args.reference / f"shader_{fragment.stem}"
+    tic = time.perf_counter()
+    try:
+        context = GLContext()
+    except RuntimeError as exc:
+        raise UserError(str(exc)) from None
+    try:
+        runner = ShaderRunner(context, source, str(fragment), references.luts, args.ripples)
+    except ShaderError as exc:
+        for message in exc.messages:
+            print(message, file=sys.stderr)
+        print(f"oceanrender: error: {fragment}: {len(exc.messages)} GLSL error(s)", file=sys.stderr)
+        return 2
+    print(f"oceanrender {__version__}: {fragment} on {context.renderer}; reference set {args.reference} "
+          f"({len(references.views)} frame(s))", flush=True)
+    grade = validate_shader(runner, references, args.gamma, progress=lambda text: print(text, flush=True))
+    out.mkdir(parents=True, exist_ok=True)
+    meta = {"shader": str(fragment), "reference_set": str(args.reference), "gamma": grade.gamma,
+            "ripple_strength": args.ripples}
+    for frame in grade.frames:
+        write_shader_frame(out, frame, references.phi.display, {**meta, "frame": frame.frame})
+    report = shader_report(grade, references, str(fragment), source_digest(source), context.renderer, args.ripples)
+    write_shader_report(out, report)
+    context.release()
+    print(f"water dE2000 vs reference: mean {grade.before.mean:.2f}, p95 {grade.before.p95:.2f} "
+          f"(numpy model {grade.model_vs_reference.mean:.2f}); vs numpy model mean {grade.shader_vs_model.mean:.3f}; "
+          + (f"fitted gamma {grade.fitted_gamma:.4g}: mean {grade.after.mean:.2f}" if grade.gamma_sensitive
+             else "the shader ignores u_gamma")
+          + f"; report {out / 'report.md'} ({time.perf_counter() - tic:.1f} s)")
+    return 0
+
+
 COMMANDS = {"render": cmd_render, "geometry": cmd_geometry, "coastal": cmd_coastal, "optics": cmd_optics,
             "movie": cmd_movie, "info": cmd_info, "bake-luts": cmd_bake_luts, "reference": cmd_reference,
-            "probe": cmd_probe}
+            "probe": cmd_probe, "validate-shader": cmd_validate_shader}
 
 
 def one_line(message: object) -> str:

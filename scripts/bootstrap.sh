@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set up (or refresh) everything oceanrender needs on a fresh Debian 12 machine:
 #   1. a libLLVM that drjit 1.5 can drive (Debian's libllvm19; LLVM 14/15 abort it),
-#   2. a virtual environment in .venv with exactly the versions in requirements.lock
+#   2. Mesa's EGL (headless OpenGL for `oceanrender validate-shader`),
+#   3. a virtual environment in .venv with exactly the versions in requirements.lock
 #      (hash-checked), then the project itself, editable.
 # Idempotent: a stamp file records the lock and pyproject.toml it was made from;
 # OCEANRENDER_FRESH_VENV=1 rebuilds .venv regardless (CI does).
@@ -29,6 +30,20 @@ if ! llvm_ok; then
     apt-get install -y -qq libllvm19 >/dev/null || echo "bootstrap: warning: apt-get install libllvm19 failed" >&2
   fi
   llvm_ok || echo "bootstrap: warning: no libLLVM >= 16 found: renders fall back to the slow scalar_spectral variant" >&2
+fi
+
+# Headless OpenGL for `oceanrender validate-shader` (moderngl over EGL): Mesa's EGL and its drivers
+# (llvmpipe, the software rasteriser, when there is no GPU).
+egl_ok() { ls /usr/lib/*-linux-gnu/libEGL_mesa.so.0 /usr/lib/*-linux-gnu/libEGL.so.1 >/dev/null 2>&1; }
+if ! egl_ok; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+    echo "bootstrap: installing Mesa's EGL (libegl1 libegl-mesa0 libgl1-mesa-dri) with apt-get" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq >/dev/null
+    apt-get install -y -qq libegl1 libegl-mesa0 libgl1-mesa-dri >/dev/null \
+      || echo "bootstrap: warning: apt-get install of Mesa's EGL failed" >&2
+  fi
+  egl_ok || echo "bootstrap: warning: no EGL found: validate-shader cannot create an OpenGL context" >&2
 fi
 
 # The stamp is the hash of the lock and of pyproject.toml: a changed lock rebuilds .venv.

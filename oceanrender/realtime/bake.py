@@ -44,10 +44,13 @@ from .luts import (
 
 __all__ = ["BakeSettings", "SceneLight", "LutSet", "scene_iops", "measure_scene_light", "water_column",
            "reference_albedo", "floor_albedo", "lut_axes", "bake_lut_set", "finest_cell", "surface_roughness_alpha",
-           "LUT_NAMES", "COLOUR_UNIT"]
+           "LUT_NAMES", "OPTIONAL_LUT_NAMES", "COLOUR_UNIT", "seafloor_lut"]
 
 #: The textures of a LUT set, in the order they are written.
 LUT_NAMES = ("T0", "T1", "fresnel", "sky", "ripple_normals", "ripple_offsets")
+
+#: LUTs a set holds only for some scenes: ``seafloor`` (rock coverage of a coastal floor).
+OPTIONAL_LUT_NAMES = ("seafloor",)
 
 #: Unit of every colour LUT.
 COLOUR_UNIT = "linear display sRGB after the vision model Φ (1 = display white, D65)"
@@ -351,6 +354,7 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
 
     sand = rock = None
     if scene.coastal is not None:
+        luts["seafloor"] = seafloor_lut(scene.coastal, common)
         sand = albedo_display_rgb(linear_reflectance(wl, scene.coastal.sand_albedo), E_white, wl, phi)
         rock = albedo_display_rgb(linear_reflectance(wl, scene.coastal.rock_albedo), E_white, wl, phi)
     for lut in luts.values():
@@ -387,6 +391,27 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
             "glint": "the sun's specular highlight, added to Eq. 20 (not part of T_refl, which is the sky map)"},
     }
     return LutSet(luts=luts, constants=constants)
+
+
+def seafloor_lut(coastal, common: dict) -> Lut:
+    """Rock coverage of a coastal floor on its grid (R, [0, 1]) over world x (columns) and y (rows) [m].
+
+    The values the terrain mesh carries per vertex
+    (:func:`oceanrender.scene.arrays.rock_mask`), so that a shader can look
+    the seafloor up at a displaced point (the ripples' texture-coordinate
+    perturbation); bilinear between the cell centres, clamped at the edges.
+    """
+    from ..scene.arrays import coastal_cell_centres, rock_mask  # noqa: PLC0415
+
+    x, y = coastal_cell_centres(coastal)
+    rock = rock_mask(coastal)
+    columns = Axis("x", "x", "m", len(x), "linear", float(x[0]), float(x[-1]))
+    rows = Axis("y", "y", "m", len(y), "linear", float(y[0]), float(y[-1]))
+    return Lut("seafloor", rock[..., None].astype(np.float32), ("R",), columns, rows,
+               "rock coverage c in [0, 1] of the seafloor at world (x, y) [-]; the albedo is "
+               "(1 - c) sand_albedo_rgb + c rock_albedo_rgb (luts.json)", "linear",
+               {**common, "rock_cover": coastal.rock_cover, "seed": coastal.seed,
+                "source": "oceanrender.scene.arrays.rock_mask (the terrain mesh's per-vertex rock)"})
 
 
 def finest_cell(scene: Scene) -> float:

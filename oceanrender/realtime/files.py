@@ -24,7 +24,7 @@ from .bake import LUT_NAMES, LutSet
 from .luts import Axis, Lut
 
 __all__ = ["jsonable", "write_json", "read_json", "write_lut", "read_lut", "write_lut_set", "read_lut_set",
-           "preview_8bit", "PREVIEW_ROWS"]
+           "preview_8bit", "PREVIEW_ROWS", "read_gbuffer"]
 
 #: A one-row LUT's PNG preview repeats its row this many times (the EXR has one row).
 PREVIEW_ROWS = 32
@@ -135,11 +135,12 @@ def read_lut(folder: str | Path, name: str) -> Lut:
 def write_lut_set(folder: str | Path, lut_set: LutSet) -> list[Path]:
     """Write every LUT of the set and ``luts.json`` (the list and the constants)."""
     written = []
-    for name in LUT_NAMES:
+    names = list(LUT_NAMES) + [name for name in lut_set.luts if name not in LUT_NAMES]  # + optional ones
+    for name in names:
         written += write_lut(folder, lut_set.luts[name])
     index = Path(folder) / "luts.json"
-    write_json(index, {"oceanrender_version": __version__, "luts": list(LUT_NAMES),
-                       "files": {name: f"{name}.json" for name in LUT_NAMES}, "constants": lut_set.constants})
+    write_json(index, {"oceanrender_version": __version__, "luts": names,
+                       "files": {name: f"{name}.json" for name in names}, "constants": lut_set.constants})
     return written + [index]
 
 
@@ -194,11 +195,11 @@ def write_display_image(exr: Path, png: Path, rgb: np.ndarray, metadata: dict, x
     write_png(png, encode_sRGB_8bit(rgb if display is None else display(rgb)))
 
 
-def delta_e_preview(delta_E: np.ndarray) -> np.ndarray:
-    """False-colour (matplotlib 'magma') 8-bit image of a ΔE map over [0, :data:`DELTA_E_PREVIEW_MAX`]."""
+def delta_e_preview(delta_E: np.ndarray, top: float = DELTA_E_PREVIEW_MAX) -> np.ndarray:
+    """False-colour (matplotlib 'magma') 8-bit image of a ΔE map over [0, top]."""
     import matplotlib  # noqa: PLC0415
 
-    scaled = np.clip(np.nan_to_num(delta_E) / DELTA_E_PREVIEW_MAX, 0.0, 1.0)
+    scaled = np.clip(np.nan_to_num(delta_E) / top, 0.0, 1.0)
     return np.rint(matplotlib.colormaps["magma"](scaled)[..., :3] * 255).astype(np.uint8)
 
 
@@ -210,8 +211,8 @@ def write_delta_e(exr: Path, png: Path, maps: dict[str, np.ndarray], water: np.n
     write_png(png, delta_e_preview(next(iter(maps.values()))))
 
 
-def write_delta_e_png(png: Path, delta_E: np.ndarray) -> None:
-    write_png(png, delta_e_preview(delta_E))
+def write_delta_e_png(png: Path, delta_E: np.ndarray, top: float = DELTA_E_PREVIEW_MAX) -> None:
+    write_png(png, delta_e_preview(delta_E, top))
 
 
 def write_gbuffer(path: Path, gbuffer, metadata: dict) -> None:
@@ -220,6 +221,22 @@ def write_gbuffer(path: Path, gbuffer, metadata: dict) -> None:
 
     notes = {f"channel {key}": value for key, value in CHANNEL_NOTES.items()}
     write_exr(path, gbuffer.channels(), {**metadata, **notes})
+
+
+def read_gbuffer(path: str | Path):
+    """A :class:`~oceanrender.realtime.gbuffer.GBuffer` back from its EXR (inverse of :func:`write_gbuffer`; float32 values)."""
+    from .gbuffer import GBuffer  # noqa: PLC0415
+
+    channels, _ = read_exr(path)
+
+    def vector(prefix: str) -> np.ndarray:
+        return np.stack([channels[f"{prefix}.{axis}"] for axis in "XYZ"], axis=-1).astype(np.float64)
+
+    return GBuffer(kind=np.rint(channels["kind"]).astype(np.uint8), ray=vector("D"), position=vector("P"),
+                   normal=vector("N"), geo_normal=vector("Ng"), distance=channels["distance"].astype(np.float64),
+                   cos_view=channels["cos_view"].astype(np.float64), depth=channels["depth"].astype(np.float64),
+                   path_length=channels["path_length"].astype(np.float64), refracted=vector("T"),
+                   bottom_position=vector("Pb"), rock=channels["rock"].astype(np.float64))
 
 
 def write_water_mesh(path: Path, geometry, faces: np.ndarray, comments: dict) -> None:
@@ -239,7 +256,7 @@ def report_markdown(report: dict) -> str:
     lines = [f"# Real-time model vs path-traced reference: {report['scene']}", "",
              f"Frames {report['frames'][0]}:{report['frames'][1]}, "
              f"{report['resolution'][0]}x{report['resolution'][1]} px, "
-             f"{report['spp']} spp, variant {report['variant']}. LUTs: `{report['luts']}`. "
+             f"{report['spp']} spp{' (denoised, OIDN)' if report.get('denoised') else ''}, variant {report['variant']}. LUTs: `{report['luts']}`. "
              f"Adaptation L_wa = {report['adaptation_luminance_cd_m2']:.6g} cd/m² ({report['adaptation_source']}).",
              "", "CIEDE2000 between the display images (clipped linear sRGB → CIELAB, D65).", "",
              f"## γ of F^γ (Eq. 20), fitted over the water pixels of all frames: γ = {fit['gamma']:.4g}", "",
@@ -264,13 +281,13 @@ def report_markdown(report: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
-def write_report(folder: str | Path, report: dict) -> list[Path]:
-    """``report.json`` and ``report.md`` of a reference set."""
+def write_report(folder: str | Path, report: dict, markdown=None) -> list[Path]:
+    """``report.json`` and ``report.md`` (``markdown(report)``; :func:`report_markdown` by default) of a report."""
     folder = Path(folder)
     json_path, md_path = folder / "report.json", folder / "report.md"
     write_json(json_path, report)
     with atomic_path(md_path, ".md") as tmp:
-        tmp.write_text(report_markdown(jsonable(report)), encoding="utf-8")
+        tmp.write_text((markdown or report_markdown)(jsonable(report)), encoding="utf-8")
     return [json_path, md_path]
 
 
@@ -310,3 +327,99 @@ def write_fitted(folder: str | Path, frame: int, before, after, metadata: dict) 
     write_delta_e(paths["delta_e_exr"], paths["delta_e_png"], {"dE_before": before.delta_E, "dE_after": after.delta_E},
                   before.terms.water, {**metadata, "gamma_before": before.gamma, "gamma_after": after.gamma})
     write_delta_e_png(paths["delta_e_fitted_png"], after.delta_E)
+
+
+# -- shader validation (``oceanrender validate-shader``) -----------------------------------------------------------
+
+#: ΔE2000 at the top of the false-colour scale of the shader-vs-numpy-model maps (agreement is judged at 0.5).
+DELTA_E_MODEL_PREVIEW_MAX = 2.0
+
+#: What each file of a shader validation holds (copied into its report).
+SHADER_REPORT_FILES = {
+    "shader_NNNN.exr/png": "the shader's output: EXR RGB linear sRGB before the display response; PNG as displayed",
+    "delta_e_NNNN.exr": "channels dE_reference (shader vs path-traced reference), dE_model (shader vs the numpy "
+                        "model on the same G-buffer and LUTs) and water (mask)",
+    "delta_e_NNNN.png": "dE2000 shader vs reference, magma colour map 0-20",
+    "delta_e_model_NNNN.png": "dE2000 shader vs numpy model, magma colour map 0-2",
+}
+
+
+def write_shader_frame(folder: str | Path, grade, display, metadata: dict) -> None:
+    """A graded frame's shader image, ΔE maps (EXR) and their previews."""
+    folder = Path(folder)
+    stem = f"{grade.frame:04d}"
+    write_display_image(folder / f"shader_{stem}.exr", folder / f"shader_{stem}.png", grade.shader_rgb,
+                        {**metadata, "channels": "RGB linear sRGB before the display response (the shader's output)"},
+                        display=display)
+    write_delta_e(folder / f"delta_e_{stem}.exr", folder / f"delta_e_{stem}.png",
+                  {"dE_reference": grade.delta_E_reference, "dE_model": grade.delta_E_model}, grade.water, metadata)
+    write_delta_e_png(folder / f"delta_e_model_{stem}.png", grade.delta_E_model, DELTA_E_MODEL_PREVIEW_MAX)
+
+
+def shader_report(grade, references, shader: str, digest: str, renderer: str, strength: float) -> dict:
+    """The JSON-ready report of a shader graded on a reference set."""
+    ref = references.report
+    per_frame = [{"frame": f.frame, **f.stats(), "worst_regions": f.regions} for f in grade.frames]
+    return {
+        "shader": shader, "shader_sha256": digest, "opengl": renderer, "oceanrender_version": __version__,
+        "reference_set": str(references.folder), "luts": str(references.luts_folder), "scene": ref.get("scene"),
+        "frames": ref.get("frames"), "resolution": ref.get("resolution"), "spp": ref.get("spp"),
+        "denoised": bool(ref.get("denoised", False)), "ripple_strength": strength, "gamma": grade.gamma,
+        "totals_water": {"shader_vs_reference": grade.before.describe(),
+                         "numpy_model_vs_reference": grade.model_vs_reference.describe(),
+                         "shader_vs_numpy_model": grade.shader_vs_model.describe()},
+        "totals_all_pixels": {"shader_vs_reference": grade.all_vs_reference.describe()},
+        "gamma_fit": {"gamma": grade.fitted_gamma, "gamma_start": grade.gamma, "before": grade.before.describe(),
+                      "after": grade.after.describe(), "grid": [list(p) for p in grade.curve],
+                      "shader_uses_gamma": grade.gamma_sensitive},
+        "reference_noise": ref.get("reference_noise"), "per_frame": per_frame, "files": SHADER_REPORT_FILES,
+    }
+
+
+def shader_report_markdown(report: dict) -> str:
+    """The shader report as Markdown (the content of ``report.json``)."""
+    t, fit = report["totals_water"], report["gamma_fit"]
+    noise = report.get("reference_noise")
+    lines = [f"# Shader `{Path(report['shader']).name}` vs path-traced references: {report['scene']}", "",
+             f"Reference set `{report['reference_set']}`: frames {report['frames'][0]}:{report['frames'][1]}, "
+             f"{report['resolution'][0]}x{report['resolution'][1]} px, {report['spp']} spp"
+             f"{' (denoised, OIDN)' if report['denoised'] else ''}. OpenGL: {report['opengl']}. "
+             f"Ripple strength {report['ripple_strength']:g}, gamma {report['gamma']:.4g}. "
+             f"Shader SHA-256 `{report['shader_sha256'][:16]}…`.", "",
+             "CIEDE2000 between the images as displayed (the vision model's display response, clipped, CIELAB D65).",
+             "", "## Water pixels, all frames", "", "| comparison | mean | p95 | max | pixels |", "|---|---|---|---|---|"]
+    for label, key in (("shader vs reference", "shader_vs_reference"),
+                       ("numpy model vs reference (baseline)", "numpy_model_vs_reference"),
+                       ("shader vs numpy model (same inputs)", "shader_vs_numpy_model")):
+        s = t[key]
+        lines.append(f"| {label} | {s['mean']:.3f} | {s['p95']:.3f} | {s['max']:.3f} | {s['pixels']} |")
+    if noise:
+        w = noise["water"]
+        lines += ["", f"Noise floor: two path-traced renders of frame {noise['frame']} with independent seeds"
+                      f"{' (both denoised)' if noise.get('denoised') else ''} differ by mean {w['mean']:.2f}, p95 "
+                      f"{w['p95']:.2f}, max {w['max']:.2f} (water). A reference's own error is about 1/√2 of that."]
+    lines += ["", "## γ of F^γ (Eq. 20), fitted for this shader", ""]
+    if fit["shader_uses_gamma"]:
+        lines += ["| γ | mean | p95 | max |", "|---|---|---|---|",
+                  f"| {fit['gamma_start']:.4g} (given) | {_fmt(fit['before'])} |",
+                  f"| {fit['gamma']:.4g} (fitted) | {_fmt(fit['after'])} |"]
+    else:
+        lines.append("The shader's image does not change with `u_gamma`: no fit.")
+    lines += ["", "## Per frame (water pixels)", "",
+              "| frame | vs reference: mean | p95 | max | vs numpy model: mean | p95 | max | worst tile "
+              "[x0, y0, x1, y1) px: mean dE, view angle, distance |", "|---|---|---|---|---|---|---|---|"]
+    for entry in report["per_frame"]:
+        worst = entry["worst_regions"][0] if entry["worst_regions"] else None
+        where = "—" if worst is None else (
+            f"{worst['rect_px']}: {worst['mean']:.1f}, "
+            + (f"{worst['view_angle_deg']:.0f}°, {worst['distance_m']:.0f} m" if worst["distance_m"] else "sky"))
+        model = entry["shader_vs_model"]["water"]
+        lines.append(f"| {entry['frame']} | {_fmt(entry['shader_vs_reference']['water'])} | "
+                     f"{model['mean']:.3f} | {model['p95']:.3f} | {model['max']:.3f} | {where} |")
+    lines += ["", "## Files", ""] + [f"* `{k}`: {v}" for k, v in report["files"].items()]
+    return "\n".join(lines) + "\n"
+
+
+def write_shader_report(folder: str | Path, report: dict) -> list[Path]:
+    """``report.json`` and ``report.md`` of a shader validation."""
+    return write_report(folder, report, shader_report_markdown)

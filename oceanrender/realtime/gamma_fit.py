@@ -17,6 +17,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import colour
@@ -26,7 +27,7 @@ from numpy.typing import ArrayLike, NDArray
 from .compare import ErrorStats, display_to_Lab, error_stats
 from .model import RealtimeTerms, fresnel_mix
 
-__all__ = ["FitView", "fit_view", "mean_delta_E", "GammaFit", "fit_gamma"]
+__all__ = ["FitView", "fit_view", "mean_delta_E", "GammaFit", "fit_gamma", "minimise_log_gamma"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -37,8 +38,10 @@ class FitView:
     ----------
     F : ndarray (N,)                 Fresnel reflectance [-].
     T_refl, C_water : ndarray (N, 3)  The two terms of Eq. 20 (display RGB).
-    reference_Lab : ndarray (N, 3)   CIELAB of the reference at those pixels.
+    reference_Lab : ndarray (N, 3)   CIELAB of the reference at those pixels, as displayed.
     glint : ndarray (N, 3) or None   The sun's glint added after Eq. 20 (display RGB).
+    display : callable               Φ's display response applied to the model before CIELAB (identity
+                                     for the linear operators; the reference's is in ``reference_Lab``).
     """
 
     F: NDArray[np.float64]
@@ -46,19 +49,26 @@ class FitView:
     C_water: NDArray[np.float64]
     reference_Lab: NDArray[np.float64]
     glint: NDArray[np.float64] | None = None
+    display: Callable[[NDArray], NDArray] = np.asarray
 
     def delta_E(self, gamma: float) -> NDArray[np.float64]:
-        """ΔE2000 (N,) of the model at γ against the reference."""
+        """ΔE2000 (N,) of the model at γ against the reference, both as displayed."""
         rgb = fresnel_mix(self.F, self.T_refl, self.C_water, gamma)
-        model = display_to_Lab(rgb if self.glint is None else rgb + self.glint)
+        model = display_to_Lab(self.display(rgb if self.glint is None else rgb + self.glint))
         return np.asarray(colour.delta_E(model, self.reference_Lab, method="CIE 2000"))
 
 
-def fit_view(terms: RealtimeTerms, reference_rgb: ArrayLike) -> FitView:
-    """The :class:`FitView` of a view from its real-time terms and its reference image (H, W, 3)."""
+def fit_view(terms: RealtimeTerms, reference_rgb: ArrayLike,
+             display: Callable[[NDArray], NDArray] = np.asarray) -> FitView:
+    """The :class:`FitView` of a view from its real-time terms and its reference image (H, W, 3).
+
+    ``display``: Φ's display response (``VisionState.display``), applied to
+    both images before they are compared, as :func:`.reference.compare_frame` does.
+    """
     w = terms.water
     return FitView(F=terms.F[w], T_refl=terms.T_refl[w], C_water=terms.C_water[w],
-                   reference_Lab=display_to_Lab(np.asarray(reference_rgb)[w]), glint=terms.glint[w])
+                   reference_Lab=display_to_Lab(display(np.asarray(reference_rgb)[w])), glint=terms.glint[w],
+                   display=display)
 
 
 def mean_delta_E(views: list[FitView], gamma: float) -> float:
@@ -111,22 +121,31 @@ def fit_gamma(views: list[FitView], gamma_start: float = 1.0, bounds: tuple[floa
     -------
     GammaFit
     """
-    from scipy.optimize import minimize_scalar  # noqa: PLC0415
-
     if not views or sum(len(v.F) for v in views) == 0:
         raise ValueError("fit_gamma: no water pixels to fit")
-    lo, hi = np.log(bounds[0]), np.log(bounds[1])
-    log_grid = np.linspace(lo, hi, grid)
-    values = np.array([mean_delta_E(views, float(np.exp(g))) for g in log_grid])
-    best = int(np.argmin(values))
-    bracket = (log_grid[max(best - 1, 0)], log_grid[min(best + 1, grid - 1)])
-    result = minimize_scalar(lambda g: mean_delta_E(views, float(np.exp(g))), bounds=bracket, method="bounded",
-                             options={"xatol": tolerance})
-    log_gamma = float(result.x) if result.fun <= values[best] else float(log_grid[best])
-    gamma = float(np.exp(log_gamma))
+    gamma, curve = minimise_log_gamma(lambda g: mean_delta_E(views, g), bounds, grid, tolerance)
 
     def stats(g: float) -> ErrorStats:
         return error_stats(np.concatenate([view.delta_E(g) for view in views]))
 
     return GammaFit(gamma=gamma, gamma_start=float(gamma_start), before=stats(gamma_start), after=stats(gamma),
-                    curve=tuple((float(np.exp(g)), float(v)) for g, v in zip(log_grid, values)))
+                    curve=curve)
+
+
+def minimise_log_gamma(cost: Callable[[float], float], bounds: tuple[float, float] = (0.1, 10.0), grid: int = 41,
+                       tolerance: float = 1e-4) -> tuple[float, tuple[tuple[float, float], ...]]:
+    """γ minimising ``cost(γ)``: a log-spaced grid over ``bounds``, then Brent's bounded method [3] in ln γ.
+
+    Returns γ and the grid's (γ, cost) pairs. The grid guards against a
+    local minimum; Brent refines between the best grid point's neighbours.
+    """
+    from scipy.optimize import minimize_scalar  # noqa: PLC0415
+
+    log_grid = np.linspace(np.log(bounds[0]), np.log(bounds[1]), grid)
+    values = np.array([cost(float(np.exp(g))) for g in log_grid])
+    best = int(np.argmin(values))
+    bracket = (log_grid[max(best - 1, 0)], log_grid[min(best + 1, grid - 1)])
+    result = minimize_scalar(lambda g: cost(float(np.exp(g))), bounds=bracket, method="bounded",
+                             options={"xatol": tolerance})
+    log_gamma = float(result.x) if result.fun <= values[best] else float(log_grid[best])
+    return float(np.exp(log_gamma)), tuple((float(np.exp(g)), float(v)) for g, v in zip(log_grid, values))

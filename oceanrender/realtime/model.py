@@ -22,10 +22,14 @@ that a shader can be checked against it pixel by pixel):
   ``roughdielectric``) and Smith's G₁ (Walter et al. 2007). It is a separate
   term because its Fresnel factor is F(v·h), not the F(n·v) of Eq. 20.
 
-Not modelled (stated in docs/realtime.md): the ripple maps (a pixel of the
-reference averages many ripples, as the rough BSDF does; the maps are for
-shaders whose pixels resolve them), the blur of the sky's reflection by the
-roughness, shadows.
+* ripples (optional, :class:`RippleView`; what the shipped GLSL shader does):
+  the baked ripple maps' resolved slopes tilt the normal, the unresolved rest
+  stays roughness of the glint, and the seafloor is looked up where the
+  ripple-refracted ray meets it (:mod:`.ripples`). Without them the normal is
+  the mesh's and α the whole roughness of the unresolved waves.
+
+Not modelled (stated in docs/realtime.md): the blur of the sky's reflection by
+the roughness, shadows.
 
 References
 ----------
@@ -46,10 +50,11 @@ from ..optics.fresnel import N_AIR, fresnel_correction, reflectance_Fresnel
 from .bake import LutSet
 from .gbuffer import KIND_LAND, KIND_SKY, KIND_WATER, GBuffer
 from .luts import Axis, Lut, direction_to_envmap_uv
+from .ripples import RipplePyramids, sample_ripples
 
 __all__ = ["sample_lut_1d", "sample_lut_2d", "sample_envmap", "fresnel_mix", "transmitted_colour",
            "distribution_Beckmann", "masking_Smith_Beckmann", "sun_glint", "RealtimeTerms", "realtime_terms",
-           "render_realtime", "FRESNEL_SOURCES"]
+           "render_realtime", "FRESNEL_SOURCES", "RippleView"]
 
 #: Lowest z of a reflected direction looked up in the sky map [-] (just above the horizon).
 HORIZON_Z = 1e-3
@@ -122,27 +127,29 @@ def transmitted_colour(T0: ArrayLike, T1: ArrayLike, R: ArrayLike, R0: ArrayLike
     return np.asarray(T0) + np.asarray(T1) * (np.asarray(R) - np.asarray(R0))  # Eq. 22 of [1]
 
 
-def distribution_Beckmann(cos_h: ArrayLike, alpha: float) -> NDArray[np.float64]:
+def distribution_Beckmann(cos_h: ArrayLike, alpha: ArrayLike) -> NDArray[np.float64]:
     """Beckmann microfacet distribution D(h) = exp(−tan²θ_h/α²)/(π α² cos⁴θ_h) [sr⁻¹].
 
     Normalised so that ∫ D cos θ_h dω = 1.
 
     References: Eq. 25 of Walter et al. (2007).
     """
+    alpha = np.asarray(alpha, dtype=np.float64)
     c2 = np.clip(np.asarray(cos_h, dtype=np.float64), 1e-12, 1.0) ** 2
     return np.where(np.asarray(cos_h) > 0, np.exp(-(1.0 - c2) / (c2 * alpha**2)) / (np.pi * alpha**2 * c2**2),
                     0.0)  # Eq. 25 of [2]
 
 
-def masking_Smith_Beckmann(cos_v: ArrayLike, alpha: float) -> NDArray[np.float64]:
+def masking_Smith_Beckmann(cos_v: ArrayLike, alpha: ArrayLike) -> NDArray[np.float64]:
     """Smith's masking G₁ for Beckmann facets, the rational approximation of Walter et al. (2007), Eq. 27 [-]."""
+    alpha = np.asarray(alpha, dtype=np.float64)
     c = np.clip(np.asarray(cos_v, dtype=np.float64), 1e-12, 1.0)
     a = np.minimum(c / (alpha * np.maximum(np.sqrt(1.0 - c**2), 1e-12)), 1.6)
     g = (3.535 * a + 2.181 * a**2) / (1.0 + 2.276 * a + 2.577 * a**2)  # Eq. 27 of [2]
     return np.where(a < 1.6, g, 1.0)
 
 
-def sun_glint(normal: ArrayLike, to_viewer: ArrayLike, sun: ArrayLike, alpha: float, n_water: float,
+def sun_glint(normal: ArrayLike, to_viewer: ArrayLike, sun: ArrayLike, alpha: ArrayLike, n_water: float,
               sun_rgb: ArrayLike) -> NDArray[np.float64]:
     """Radiance of the sun reflected by rough water, π E_sun F(v·h) D(h) G₁(v) G₁(s)/(4 n·v), display RGB.
 
@@ -152,7 +159,7 @@ def sun_glint(normal: ArrayLike, to_viewer: ArrayLike, sun: ArrayLike, alpha: fl
         Unit mean surface normal and unit direction to the camera.
     sun : array_like (3,)
         Unit direction to the sun.
-    alpha : float
+    alpha : float or array_like (...)
         Beckmann roughness α of the unresolved waves [-].
     n_water : float
         Refractive index [-].
@@ -205,6 +212,22 @@ class RealtimeTerms:
         return np.where(self.water[..., None], mixed, self.other)
 
 
+@dataclass(frozen=True, eq=False)
+class RippleView:
+    """The ripple maps as one view samples them.
+
+    Attributes
+    ----------
+    pyramids : RipplePyramids   The mipmapped slope moments and offsets (:func:`.ripples.ripple_pyramids`).
+    strength : float            k ≥ 0: scale of the ripple slopes (1: as baked; 0: none, the seafloor map still used).
+    pixel_angle : float         Angle of a pixel at the image centre [rad] (:func:`.ripples.pixel_angle`).
+    """
+
+    pyramids: RipplePyramids
+    strength: float
+    pixel_angle: float
+
+
 def _albedo(luts: LutSet, rock: NDArray) -> NDArray[np.float64]:
     """Seafloor albedo in display RGB: (1 − rock) R_sand + rock R_rock; R0 without a coastal seafloor."""
     sand, stone = luts.constants.get("sand_albedo_rgb"), luts.constants.get("rock_albedo_rgb")
@@ -213,7 +236,8 @@ def _albedo(luts: LutSet, rock: NDArray) -> NDArray[np.float64]:
     return (1.0 - rock[..., None]) * np.asarray(sand) + rock[..., None] * np.asarray(stone)
 
 
-def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: bool = True) -> RealtimeTerms:
+def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: bool = True,
+                   ripples: RippleView | None = None) -> RealtimeTerms:
     """Shade a G-buffer with the LUTs: the terms of Eq. 20 for water, final colours elsewhere.
 
     Parameters
@@ -227,12 +251,27 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
         ``"exact"`` (the Fresnel formula).
     glint : bool
         Add the sun's glint (:func:`sun_glint`).
+    ripples : RippleView, optional
+        Tilt the water's normals by the resolved ripples, keep the rest as the
+        glint's roughness and look the seafloor up in the LUT set's
+        ``seafloor`` map at the ripple-displaced point (when it has one).
     """
     if fresnel not in FRESNEL_SOURCES:
         raise ValueError(f"fresnel: unknown source {fresnel!r}; known: {', '.join(map(repr, FRESNEL_SOURCES))}")
     kind = gbuffer.kind
     water = kind == KIND_WATER
-    mu = np.clip(gbuffer.cos_view, 0.0, 1.0)
+    alpha_surface = float(luts.constants["surface_roughness_alpha"])
+    alpha = np.full(kind.shape, alpha_surface)
+    normal, rock, mu = gbuffer.normal, gbuffer.rock, np.clip(gbuffer.cos_view, 0.0, 1.0)
+    if ripples is not None:
+        sample = sample_ripples(ripples.pyramids, gbuffer.position[water], gbuffer.normal[water],
+                                gbuffer.distance[water], gbuffer.ray[water][:, 2], ripples.pixel_angle,
+                                alpha_surface, ripples.strength)
+        normal = gbuffer.normal.copy()
+        normal[water] = sample.normal
+        alpha[water] = sample.alpha
+        rock = _seafloor_rock(luts, gbuffer, water, sample.drift, rock)
+        mu = np.where(water, np.clip(np.sum(normal * -gbuffer.ray, axis=-1), 0.0, 1.0), mu)
     if fresnel == "lut":
         F = sample_lut_1d(luts["fresnel"], mu)[..., 0]
     else:
@@ -241,7 +280,7 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
     # Mirror direction of the camera ray about the shading normal. NOTE: where it points below the horizon
     # (grazing views of tilted facets) it is lifted onto the horizon: the sky map is black down there, while
     # the path tracer's ray meets the sea again; the horizon sky is the usual stand-in.
-    reflected = gbuffer.ray + 2.0 * mu[..., None] * gbuffer.normal
+    reflected = gbuffer.ray + 2.0 * mu[..., None] * normal
     reflected[..., 2] = np.maximum(reflected[..., 2], HORIZON_Z)
     reflected /= np.linalg.norm(reflected, axis=-1, keepdims=True)
     T_refl = sample_envmap(luts["sky"], reflected)
@@ -249,14 +288,13 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
     l = np.where(water, gbuffer.path_length, np.inf)
     T0 = sample_lut_1d(luts["T0"], h)
     T1 = sample_lut_2d(luts["T1"], l, h)
-    R = _albedo(luts, gbuffer.rock)
+    R = _albedo(luts, rock)
     C_water = transmitted_colour(T0, np.where(np.isfinite(l)[..., None], T1, 0.0), R,
                                  luts.rgb("reference_albedo_rgb"))
     sun = np.asarray(luts.constants["sun_direction"], dtype=np.float64)
     glints = np.zeros(kind.shape + (3,))
     if glint and np.any(water):
-        glints[water] = sun_glint(gbuffer.normal[water], -gbuffer.ray[water], sun,
-                                  float(luts.constants["surface_roughness_alpha"]), luts.n_water,
+        glints[water] = sun_glint(normal[water], -gbuffer.ray[water], sun, alpha[water], luts.n_water,
                                   luts.rgb("sun_irradiance_rgb"))
     other = np.zeros(kind.shape + (3,))
     sky = kind == KIND_SKY
@@ -271,7 +309,26 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
                          C_water=np.where(water[..., None], C_water, 0.0), glint=glints, other=other)
 
 
+def _seafloor_rock(luts: LutSet, gbuffer: GBuffer, water: NDArray, drift: NDArray, rock: NDArray) -> NDArray:
+    """Rock coverage where the ripple-refracted rays meet the floor: the ``seafloor`` map at P_b + z_drop (δx, δy).
+
+    z_drop = l |t_z| is how far below the surface the refracted ray meets the
+    floor; pixels without a floor, and sets without the map, keep ``rock``.
+    """
+    if "seafloor" not in luts.luts:
+        return rock
+    l = gbuffer.path_length[water]
+    floor = np.isfinite(l)
+    drop = np.where(floor, l, 0.0) * np.abs(gbuffer.refracted[water][:, 2])
+    xy = gbuffer.bottom_position[water][:, :2] + drop[:, None] * drift
+    looked_up = sample_lut_2d(luts["seafloor"], xy[:, 0], xy[:, 1])[:, 0]
+    out = rock.copy()
+    out[water] = np.where(floor, looked_up, rock[water])
+    return out
+
+
 def render_realtime(gbuffer: GBuffer, luts: LutSet, gamma: float | None = None, fresnel: str = "lut",
-                    glint: bool = True) -> NDArray[np.float64]:
+                    glint: bool = True, ripples: RippleView | None = None) -> NDArray[np.float64]:
     """The real-time model's image (H, W, 3), linear display sRGB; γ defaults to the LUT set's."""
-    return realtime_terms(gbuffer, luts, fresnel, glint).image(luts.gamma if gamma is None else float(gamma))
+    return realtime_terms(gbuffer, luts, fresnel, glint, ripples).image(luts.gamma if gamma is None
+                                                                         else float(gamma))

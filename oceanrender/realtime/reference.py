@@ -80,14 +80,19 @@ class ReferenceRenderer:
             self.loaded = frame
         return self.geometry
 
-    def render_xyz(self, frame: int, seed_offset: int = 0) -> tuple[NDArray[np.float64], int]:
+    def render_xyz(self, frame: int, seed_offset: int = 0, denoise: bool = False) -> tuple[NDArray[np.float64], int]:
         """Path-traced absolute XYZ (H, W, 3) [cd m⁻²] of a frame and its count of repaired pixels.
 
-        The seed is the renderer's (scene seed + frame) plus ``seed_offset``.
+        The seed is the renderer's (scene seed + frame) plus ``seed_offset``;
+        ``denoise``: Intel Open Image Denoise on the colour alone
+        (:func:`oceanrender.render.denoise.denoise_XYZ`).
         """
+        from ..render.denoise import denoise_XYZ  # noqa: PLC0415
+
         self.load(frame)
         seed = self.scene.render.seed + frame + seed_offset
-        return self.sequence.renderer.render_xyz(self.sequence.spp, seed=seed)
+        xyz, repaired = self.sequence.renderer.render_xyz(self.sequence.spp, seed=seed)
+        return (denoise_XYZ(xyz) if denoise else xyz), repaired
 
     def gbuffer(self, frame: int) -> GBuffer:
         """The frame's G-buffer, cast into the same scene the reference was rendered from."""
@@ -185,11 +190,15 @@ def compare_frame(reference_xyz: NDArray, gbuffer: GBuffer, luts: LutSet, phi: V
     return base.at(luts.gamma if gamma is None else float(gamma))
 
 
-def reference_noise(renderer: ReferenceRenderer, frame: int, comparison: FrameComparison, phi: VisionState) -> dict:
-    """ΔE2000 between the frame's reference and a second render with an independent seed (the path tracer's noise)."""
-    second, _ = renderer.render_xyz(frame, seed_offset=NOISE_SEED_OFFSET)
+def reference_noise(renderer: ReferenceRenderer, frame: int, comparison: FrameComparison, phi: VisionState,
+                    denoise: bool = False) -> dict:
+    """ΔE2000 between the frame's reference and a second render with an independent seed (the path tracer's noise).
+
+    ``denoise``: the second render is denoised as the reference was.
+    """
+    second, _ = renderer.render_xyz(frame, seed_offset=NOISE_SEED_OFFSET, denoise=denoise)
     dE = delta_E_2000(phi.display(phi(second)), phi.display(comparison.reference_rgb))
-    return {"frame": frame, "seed_offset": NOISE_SEED_OFFSET,
+    return {"frame": frame, "seed_offset": NOISE_SEED_OFFSET, "denoised": bool(denoise),
             "water": error_stats(dE, comparison.terms.water).describe(), "all": error_stats(dE).describe()}
 
 
@@ -221,7 +230,8 @@ def reference_report(scene: Scene, frames: tuple[int, int], identity: dict, luts
                             "all": after[frame].all.describe()}} for frame in before]
     width, height = (int(v) for v in identity["resolution"].split("x"))
     return {"scene": scene.name, "frames": list(frames), "resolution": [width, height], "spp": identity["spp"],
-            "variant": identity["variant"], "oceanrender_version": __version__, "luts": str(luts_folder),
+            "denoised": bool(identity.get("denoised", False)), "variant": identity["variant"],
+            "oceanrender_version": __version__, "luts": str(luts_folder),
             "adaptation_luminance_cd_m2": phi.adaptation_luminance,
             "adaptation_source": luts.constants["vision"]["adaptation_source"], "gamma_fit": fit.describe(),
             "per_frame": per_frame, "reference_noise": noise, "files": REPORT_FILES}
