@@ -798,7 +798,7 @@ def cmd_reference(args: argparse.Namespace) -> int:
           f"{spp} spp, variant {runtime.variant} -> {out}", flush=True)
 
     identity = {"scene": scene.name, "spp": spp, "resolution": f"{width}x{height}", "variant": runtime.variant,
-                "seed": scene.render.seed, "denoised": bool(args.denoise)}
+                "seed": scene.render.seed, "denoised": int(bool(args.denoise))}
     frames = {}
     for frame in range(start, end):
         tac = time.perf_counter()

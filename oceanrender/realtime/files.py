@@ -236,7 +236,8 @@ def read_gbuffer(path: str | Path):
                    normal=vector("N"), geo_normal=vector("Ng"), distance=channels["distance"].astype(np.float64),
                    cos_view=channels["cos_view"].astype(np.float64), depth=channels["depth"].astype(np.float64),
                    path_length=channels["path_length"].astype(np.float64), refracted=vector("T"),
-                   bottom_position=vector("Pb"), rock=channels["rock"].astype(np.float64))
+                   bottom_position=vector("Pb"), rock=channels["rock"].astype(np.float64),
+                   roughness=channels["roughness"].astype(np.float64) if "roughness" in channels else None)
 
 
 def write_water_mesh(path: Path, geometry, faces: np.ndarray, comments: dict) -> None:

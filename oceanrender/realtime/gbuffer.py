@@ -130,6 +130,9 @@ class GBuffer:
     refracted : ndarray        Water pixels: unit refracted direction; 0 elsewhere.
     bottom_position : ndarray  Water pixels: where the refracted ray meets the seafloor [m]; 0 elsewhere.
     rock : ndarray             Rock coverage in [0, 1] of the seafloor point (water) or of the hit (land) [-].
+    roughness : ndarray        Water pixels: Beckmann α of the surface BSDF at the hit, where the mesh carries
+                               it per vertex (the camera-following mesh: coarser far away, rougher) [-];
+                               0 elsewhere and where the surface has one α (the LUT set's).
     """
 
     kind: NDArray[np.uint8]
@@ -144,6 +147,11 @@ class GBuffer:
     refracted: NDArray[np.float64]
     bottom_position: NDArray[np.float64]
     rock: NDArray[np.float64]
+    roughness: NDArray[np.float64] | None = None
+
+    def __post_init__(self) -> None:
+        if self.roughness is None:
+            object.__setattr__(self, "roughness", np.zeros(self.kind.shape))
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -168,7 +176,7 @@ class GBuffer:
                 out[f"{prefix}.{axis}"] = array[..., i]
         out.update({"distance": self.distance, "cos_view": self.cos_view, "view_angle": self.view_angle,
                     "depth": self.depth, "path_length": self.path_length, "rock": self.rock,
-                    "kind": self.kind.astype(np.float32)})
+                    "roughness": self.roughness, "kind": self.kind.astype(np.float32)})
         return {k: np.asarray(v, dtype=np.float32) for k, v in out.items()}
 
 
@@ -186,6 +194,8 @@ CHANNEL_NOTES = {
     "depth": "water pixels: vertical depth h of the water column under the surface point [m] (inf: no seafloor)",
     "path_length": "water pixels: in-water length l of the refracted ray to the seafloor [m] (inf: no seafloor)",
     "rock": "rock coverage of the seafloor (water pixels: at the refracted hit; land: at the hit) [-]",
+    "roughness": "water pixels: Beckmann alpha of the surface at the hit where the mesh carries it per vertex [-]; "
+                 "0: the LUT set's surface_roughness_alpha",
     "kind": "0 sky, 1 water surface, 2 land (seafloor/beach seen directly), 3 other",
 }
 
@@ -208,7 +218,7 @@ def _numpy3(v) -> NDArray[np.float64]:
 
 
 def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water", bottom_id: str | None = "terrain",
-                  rock_attribute: str = "vertex_rock") -> GBuffer:
+                  rock_attribute: str = "vertex_rock", roughness_attribute: str = "vertex_roughness") -> GBuffer:
     """Cast the camera's pixel-centre rays into a loaded Mitsuba scene and fill a :class:`GBuffer`.
 
     Parameters
@@ -225,6 +235,8 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
         Mitsuba id of the seafloor/terrain shape; None or absent: no seafloor (open sea).
     rock_attribute : str
         Per-vertex rock coverage attribute of the seafloor mesh, if it has one.
+    roughness_attribute : str
+        Per-vertex Beckmann α attribute of the water mesh, if it has one.
     """
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
@@ -257,6 +269,11 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
     cos_view = np.clip(np.sum(shading * -d, axis=-1), 0.0, 1.0)
 
     water = kind == KIND_WATER
+    roughness = np.zeros(len(d))
+    water_shape = shapes[water_id]
+    if water.any() and water_shape.has_attribute(roughness_attribute):
+        values = np.array(water_shape.eval_attribute_1(roughness_attribute, si, mi.Bool(water)), dtype=np.float64)
+        roughness = np.where(water, np.clip(np.nan_to_num(values), 0.0, None), 0.0)
     refracted = np.where(water[:, None], refract(d, shading, 1.0 / n_water), 0.0)
     refracted = np.nan_to_num(refracted)
     depth = np.where(water, np.inf, 0.0)
@@ -293,4 +310,4 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
     return GBuffer(kind=image(kind), ray=image(d), position=image(position), normal=image(shading),
                    geo_normal=image(geo), distance=image(distance), cos_view=image(cos_view), depth=image(depth),
                    path_length=image(path), refracted=image(refracted), bottom_position=image(bottom_position),
-                   rock=image(rock))
+                   rock=image(rock), roughness=image(roughness))

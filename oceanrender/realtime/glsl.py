@@ -110,7 +110,7 @@ def gbuffer_textures(gbuffer) -> dict[str, Texture]:
     zero = np.zeros(gbuffer.shape, dtype=np.float32)
     water = np.stack([gbuffer.depth, gbuffer.path_length, gbuffer.rock], axis=-1)
     return {"g_position": rgba(gbuffer.position, gbuffer.kind), "g_normal": rgba(gbuffer.normal, gbuffer.cos_view),
-            "g_view": rgba(gbuffer.ray, gbuffer.distance), "g_water": rgba(water, zero),
+            "g_view": rgba(gbuffer.ray, gbuffer.distance), "g_water": rgba(water, gbuffer.roughness),
             "g_refracted": rgba(gbuffer.refracted, zero)}
 
 

@@ -54,7 +54,7 @@ from .ripples import RipplePyramids, sample_ripples
 
 __all__ = ["sample_lut_1d", "sample_lut_2d", "sample_envmap", "fresnel_mix", "transmitted_colour",
            "distribution_Beckmann", "masking_Smith_Beckmann", "sun_glint", "RealtimeTerms", "realtime_terms",
-           "render_realtime", "FRESNEL_SOURCES", "RippleView"]
+           "render_realtime", "FRESNEL_SOURCES", "RippleView", "surface_alpha"]
 
 #: Lowest z of a reflected direction looked up in the sky map [-] (just above the horizon).
 HORIZON_Z = 1e-3
@@ -260,13 +260,12 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
         raise ValueError(f"fresnel: unknown source {fresnel!r}; known: {', '.join(map(repr, FRESNEL_SOURCES))}")
     kind = gbuffer.kind
     water = kind == KIND_WATER
-    alpha_surface = float(luts.constants["surface_roughness_alpha"])
-    alpha = np.full(kind.shape, alpha_surface)
+    alpha = surface_alpha(gbuffer, float(luts.constants["surface_roughness_alpha"]))
     normal, rock, mu = gbuffer.normal, gbuffer.rock, np.clip(gbuffer.cos_view, 0.0, 1.0)
     if ripples is not None:
         sample = sample_ripples(ripples.pyramids, gbuffer.position[water], gbuffer.normal[water],
                                 gbuffer.distance[water], gbuffer.ray[water][:, 2], ripples.pixel_angle,
-                                alpha_surface, ripples.strength)
+                                alpha[water], ripples.strength)
         normal = gbuffer.normal.copy()
         normal[water] = sample.normal
         alpha[water] = sample.alpha
@@ -307,6 +306,12 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
         other[land] = _albedo(luts, gbuffer.rock[land]) * light
     return RealtimeTerms(water=water, F=F, T_refl=np.where(water[..., None], T_refl, 0.0),
                          C_water=np.where(water[..., None], C_water, 0.0), glint=glints, other=other)
+
+
+def surface_alpha(gbuffer: GBuffer, alpha_surface: float) -> NDArray[np.float64]:
+    """Beckmann α per pixel [-]: the G-buffer's (a mesh with α per vertex), else the LUT set's ``alpha_surface``."""
+    given = np.asarray(gbuffer.roughness, dtype=np.float64)
+    return np.where(given > 0, given, alpha_surface)
 
 
 def _seafloor_rock(luts: LutSet, gbuffer: GBuffer, water: NDArray, drift: NDArray, rock: NDArray) -> NDArray:

@@ -207,10 +207,11 @@ def perturbed_normal(normal: ArrayLike, slope: ArrayLike) -> NDArray[np.float64]
     return np.where(n[..., 2:3] >= MIN_NORMAL_Z, tilted, n)
 
 
-def effective_alpha(alpha: float, strength: float, tile_mss: float, unresolved: ArrayLike) -> NDArray[np.float64]:
+def effective_alpha(alpha: ArrayLike, strength: float, tile_mss: float, unresolved: ArrayLike
+                    ) -> NDArray[np.float64]:
     """Roughness left at a level: α_λ = √max(α² − k² (σ²_tile − σ²_λ), MIN_ALPHA²) [-] (module docstring)."""
     resolved = strength**2 * (tile_mss - np.asarray(unresolved, dtype=np.float64))
-    return np.sqrt(np.maximum(alpha**2 - resolved, MIN_ALPHA**2))
+    return np.sqrt(np.maximum(np.asarray(alpha, dtype=np.float64) ** 2 - resolved, MIN_ALPHA**2))
 
 
 @dataclass(frozen=True, eq=False)
@@ -232,8 +233,9 @@ class RippleSample:
 
 
 def sample_ripples(pyramids: RipplePyramids, position: ArrayLike, normal: ArrayLike, distance: ArrayLike,
-                   ray_z: ArrayLike, pixel_angle: float, alpha: float, strength: float) -> RippleSample:
-    """The ripple terms at water hits (position (..., 3) [m], normal, distance [m], ray z) for strength k ≥ 0."""
+                   ray_z: ArrayLike, pixel_angle: float, alpha: ArrayLike, strength: float) -> RippleSample:
+    """The ripple terms at water hits (position (..., 3) [m], normal, distance [m], ray z, the surface's α [-])
+    for strength k ≥ 0."""
     texel = pyramids.patch_size / pyramids.texels
     lod = ripple_lod(distance, ray_z, pixel_angle, texel, pyramids.levels)
     st = ripple_texcoord(np.asarray(position)[..., :2], pyramids.patch_size, pyramids.texels)

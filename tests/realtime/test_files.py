@@ -7,6 +7,9 @@ import numpy as np
 import pytest
 
 from oceanrender.realtime.bake import LUT_NAMES
+
+#: The synthetic set is coastal: it carries the optional seafloor map too.
+NAMES = LUT_NAMES + ("seafloor",)
 from oceanrender.realtime.files import PREVIEW_ROWS, jsonable, read_lut_set, write_lut_set
 from oceanrender.realtime.model import sample_lut_1d, sample_lut_2d
 
@@ -34,8 +37,8 @@ def strict_json(path):
 
 def test_every_lut_round_trips_bit_for_bit_with_its_axes(baked, folder):
     again = read_lut_set(folder)
-    assert set(again.luts) == set(LUT_NAMES)
-    for name in LUT_NAMES:
+    assert set(again.luts) == set(NAMES)
+    for name in NAMES:
         a, b = baked[name], again[name]
         np.testing.assert_array_equal(a.data, b.data)  # exact: a float32 EXR round trip
         assert a.channels == b.channels and a.columns == b.columns and a.rows == b.rows
@@ -51,7 +54,7 @@ def test_every_lut_round_trips_bit_for_bit_with_its_axes(baked, folder):
 
 
 def test_sidecars_state_axes_units_ranges_and_encodings(baked, folder):
-    for name in LUT_NAMES:
+    for name in NAMES:
         meta = strict_json(folder / f"{name}.json")
         lut = baked[name]
         assert meta["size"] == {"width": lut.data.shape[1], "height": lut.data.shape[0], "channels": list(lut.channels)}
@@ -68,7 +71,10 @@ def test_sidecars_state_axes_units_ranges_and_encodings(baked, folder):
     assert strict_json(folder / "T0.json")["encoding"]["png"].startswith("8-bit sRGB")
     assert strict_json(folder / "fresnel.json")["encoding"]["png"].startswith("8-bit linear")
     index = strict_json(folder / "luts.json")
-    assert index["luts"] == list(LUT_NAMES) and "reference_albedo_rgb" in index["constants"]
+    assert index["luts"] == list(NAMES) and "reference_albedo_rgb" in index["constants"]
+    floor = strict_json(folder / "seafloor.json")["axes"]
+    assert [(a["symbol"], a["unit"], a["mapping"]) for a in floor.values()] == [("x", "m", "linear"),
+                                                                                ("y", "m", "linear")]
 
 
 def test_png_previews_have_the_documented_encoding(baked, folder):

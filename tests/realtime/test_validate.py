@@ -146,3 +146,25 @@ def test_bad_input_is_one_line_exit_2(reference_sets, tmp_path, argv, message):
     status, _, err = run([a.format(**names) for a in argv])
     assert status == 2
     assert err.count("\n") == 1 and message.format(**names) in err
+
+
+def test_the_seafloor_map_lies_where_the_terrain_meshs_rock_is(reference_sets):
+    """The shader looks the floor up in `lut_seafloor` at world (x, y): where the G-buffer's refracted rays meet the
+    terrain, the map must give the rock coverage Mitsuba interpolated from the mesh's vertices there."""
+    from oceanrender.realtime.model import sample_lut_2d
+
+    sets, _ = reference_sets
+    references = read_reference_set(sets["beach"])
+    floor = references.luts["seafloor"]
+    rock, looked_up = [], []
+    for view in references.views:
+        g = view.gbuffer
+        hit = (g.kind == 1) & np.isfinite(g.path_length)
+        rock.append(g.rock[hit])
+        looked_up.append(sample_lut_2d(floor, g.bottom_position[hit][:, 0], g.bottom_position[hit][:, 1])[:, 0])
+    rock, looked_up = np.concatenate(rock), np.concatenate(looked_up)
+    assert rock.size > 100 and 0.02 < np.mean(rock > 0.5) < 0.6  # some rock and some sand is seen
+    # Bilinear on the cell grid vs barycentric on the mesh's triangles of the same vertices: they differ inside a
+    # cell by a fraction of the coverage's change across it; the mean difference stays well below it.
+    assert np.mean(np.abs(looked_up - rock)) < 0.05
+    assert np.corrcoef(rock, looked_up)[0, 1] > 0.95

@@ -27,7 +27,8 @@
 uniform sampler2D g_position;   // xyz: world position of the first hit [m]; w: kind (0 sky, 1 water, 2 land, 3 other)
 uniform sampler2D g_normal;     // xyz: unit shading normal facing the camera [-]; w: cos_view = n.v [-]
 uniform sampler2D g_view;       // xyz: unit camera-ray direction (camera -> scene) [-]; w: distance [m] (inf: sky)
-uniform sampler2D g_water;      // x: depth h [m]; y: in-water path l [m] (both inf: no seafloor); z: rock [0, 1]
+uniform sampler2D g_water;      // x: depth h [m]; y: in-water path l [m] (both inf: no seafloor); z: rock [0, 1];
+                                // w: Beckmann alpha of the surface at the hit (0: use u_alpha)
 uniform sampler2D g_refracted;  // xyz: unit refracted direction (water pixels) [-]
 
 // ---- LUTs: float textures, LINEAR, CLAMP_TO_EDGE (sky: REPEAT in u); nodes at texel centres ------
@@ -49,7 +50,7 @@ uniform vec3 u_sand_albedo;        // display RGB
 uniform vec3 u_rock_albedo;        // display RGB
 uniform float u_gamma;             // gamma of F^gamma (Eq. 20) [-]
 uniform float u_n_water;           // refractive index [-]
-uniform float u_alpha;             // Beckmann roughness of the waves finer than the mesh [-]
+uniform float u_alpha;             // Beckmann roughness of the waves finer than the finest mesh cell [-]
 uniform vec3 u_sun_direction;      // unit direction to the sun
 uniform vec3 u_sun_rgb;            // Phi(E_sun / pi), direct-normal sun (display RGB)
 uniform vec3 u_sky_rgb;            // Phi(E_sky / pi), diffuse sky on a horizontal plane (display RGB)
@@ -166,7 +167,7 @@ void main() {
     float h = W.x, l = W.y, rock = W.z;
     vec3 T = texelFetch(g_refracted, pixel, 0).xyz;
     vec3 n = N.xyz;
-    float alpha = u_alpha;
+    float alpha_surface = W.w > 0.0 ? W.w : u_alpha;  // a mesh with alpha per vertex: coarser, rougher far away
     float mu = clamp(N.w, 0.0, 1.0);
 
     // Ripples: LEAN moments at the level of the pixel's footprint.
@@ -183,7 +184,8 @@ void main() {
         n = normalize(vec3(n.xy / n.z - k * m.xy, 1.0));
     }
     float unresolved = max(m.z + m.w - dot(m.xy, m.xy), 0.0);
-    alpha = sqrt(max(u_alpha * u_alpha - k * k * (u_ripple_mss - unresolved), MIN_ALPHA * MIN_ALPHA));
+    float alpha = sqrt(max(alpha_surface * alpha_surface - k * k * (u_ripple_mss - unresolved),
+                           MIN_ALPHA * MIN_ALPHA));
     mu = clamp(dot(n, -ray), 0.0, 1.0);
 
     // The seafloor where the ripple-refracted ray meets it (texture-coordinate perturbation).
