@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
+from ..optics.foam import foam_spectral_factor_Frouin1996
 from ..optics.report import REPORT_WAVELENGTHS
 from ..optics.scene_water import water_ior
 from ..optics.seafloor import linear_reflectance
@@ -368,6 +369,12 @@ def bake_lut_set(scene: Scene, light: SceneLight, adaptation_luminance: float, a
         "reference_albedo_rgb": albedo_display_rgb(R0, E_white, wl, phi).tolist(),
         "sand_albedo_rgb": None if sand is None else sand.tolist(),
         "rock_albedo_rgb": None if rock is None else rock.tolist(),
+        "foam_albedo_rgb": albedo_display_rgb(scene.foam.albedo * foam_spectral_factor_Frouin1996(wl), E_white,
+                                              wl, phi).tolist(),
+        "foam_definition": "fresh foam on the fraction B of the surface (the G-buffer's foam): Lambertian of "
+                           "foam_albedo_rgb (the renderer's foam reflectance: [foam] albedo times Frouin et al. "
+                           "1996's fall towards the near infrared) under sun and sky; water on the rest: "
+                           "C = (1 - B) (Eq. 20 + glint) + B foam_albedo_rgb (sun max(0, n.s) + sky (1 + n_z)/2)",
         "albedo_rgb_definition": "Phi(R E / pi) / Phi(E / pi) per channel under the horizontal sun + sky "
                                  "irradiance E: a white albedo is (1, 1, 1)",
         "sun_direction": sun_direction(scene.sun.elevation, scene.sun.azimuth).tolist(),

@@ -237,7 +237,8 @@ def read_gbuffer(path: str | Path):
                    cos_view=channels["cos_view"].astype(np.float64), depth=channels["depth"].astype(np.float64),
                    path_length=channels["path_length"].astype(np.float64), refracted=vector("T"),
                    bottom_position=vector("Pb"), rock=channels["rock"].astype(np.float64),
-                   roughness=channels["roughness"].astype(np.float64) if "roughness" in channels else None)
+                   roughness=channels["roughness"].astype(np.float64) if "roughness" in channels else None,
+                   foam=channels["foam"].astype(np.float64) if "foam" in channels else None)
 
 
 def write_water_mesh(path: Path, geometry, faces: np.ndarray, comments: dict) -> None:

@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .compare import ErrorStats, display_to_Lab, error_stats
-from .model import RealtimeTerms, fresnel_mix
+from .model import RealtimeTerms, fresnel_mix, with_foam
 
 __all__ = ["FitView", "fit_view", "mean_delta_E", "GammaFit", "fit_gamma", "minimise_log_gamma"]
 
@@ -40,6 +40,7 @@ class FitView:
     T_refl, C_water : ndarray (N, 3)  The two terms of Eq. 20 (display RGB).
     reference_Lab : ndarray (N, 3)   CIELAB of the reference at those pixels, as displayed.
     glint : ndarray (N, 3) or None   The sun's glint added after Eq. 20 (display RGB).
+    foam, foam_colour : (N,), (N, 3) or None  Fresh-foam coverage and the foam's light (display RGB).
     display : callable               Φ's display response applied to the model before CIELAB (identity
                                      for the linear operators; the reference's is in ``reference_Lab``).
     """
@@ -50,11 +51,14 @@ class FitView:
     reference_Lab: NDArray[np.float64]
     glint: NDArray[np.float64] | None = None
     display: Callable[[NDArray], NDArray] = np.asarray
+    foam: NDArray[np.float64] | None = None
+    foam_colour: NDArray[np.float64] | None = None
 
     def delta_E(self, gamma: float) -> NDArray[np.float64]:
         """ΔE2000 (N,) of the model at γ against the reference, both as displayed."""
         rgb = fresnel_mix(self.F, self.T_refl, self.C_water, gamma)
-        model = display_to_Lab(self.display(rgb if self.glint is None else rgb + self.glint))
+        rgb = with_foam(rgb if self.glint is None else rgb + self.glint, self.foam, self.foam_colour)
+        model = display_to_Lab(self.display(rgb))
         return np.asarray(colour.delta_E(model, self.reference_Lab, method="CIE 2000"))
 
 
@@ -68,7 +72,8 @@ def fit_view(terms: RealtimeTerms, reference_rgb: ArrayLike,
     w = terms.water
     return FitView(F=terms.F[w], T_refl=terms.T_refl[w], C_water=terms.C_water[w],
                    reference_Lab=display_to_Lab(display(np.asarray(reference_rgb)[w])), glint=terms.glint[w],
-                   display=display)
+                   display=display, foam=None if terms.foam is None else terms.foam[w],
+                   foam_colour=None if terms.foam_colour is None else terms.foam_colour[w])
 
 
 def mean_delta_E(views: list[FitView], gamma: float) -> float:

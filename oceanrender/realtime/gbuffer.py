@@ -133,6 +133,8 @@ class GBuffer:
     roughness : ndarray        Water pixels: Beckmann α of the surface BSDF at the hit, where the mesh carries
                                it per vertex (the camera-following mesh: coarser far away, rougher) [-];
                                0 elsewhere and where the surface has one α (the LUT set's).
+    foam : ndarray             Water pixels: fresh-foam coverage B in [0, 1] at the hit (the mesh's per-vertex
+                               foam, as the renderer's blend of water and Lambertian foam reads it) [-]; 0 elsewhere.
     """
 
     kind: NDArray[np.uint8]
@@ -148,10 +150,12 @@ class GBuffer:
     bottom_position: NDArray[np.float64]
     rock: NDArray[np.float64]
     roughness: NDArray[np.float64] | None = None
+    foam: NDArray[np.float64] | None = None
 
     def __post_init__(self) -> None:
-        if self.roughness is None:
-            object.__setattr__(self, "roughness", np.zeros(self.kind.shape))
+        for name in ("roughness", "foam"):
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, np.zeros(self.kind.shape))
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -176,7 +180,7 @@ class GBuffer:
                 out[f"{prefix}.{axis}"] = array[..., i]
         out.update({"distance": self.distance, "cos_view": self.cos_view, "view_angle": self.view_angle,
                     "depth": self.depth, "path_length": self.path_length, "rock": self.rock,
-                    "roughness": self.roughness, "kind": self.kind.astype(np.float32)})
+                    "roughness": self.roughness, "foam": self.foam, "kind": self.kind.astype(np.float32)})
         return {k: np.asarray(v, dtype=np.float32) for k, v in out.items()}
 
 
@@ -196,6 +200,7 @@ CHANNEL_NOTES = {
     "rock": "rock coverage of the seafloor (water pixels: at the refracted hit; land: at the hit) [-]",
     "roughness": "water pixels: Beckmann alpha of the surface at the hit where the mesh carries it per vertex [-]; "
                  "0: the LUT set's surface_roughness_alpha",
+    "foam": "water pixels: fresh-foam coverage of the surface at the hit [-] (0: none)",
     "kind": "0 sky, 1 water surface, 2 land (seafloor/beach seen directly), 3 other",
 }
 
@@ -218,7 +223,8 @@ def _numpy3(v) -> NDArray[np.float64]:
 
 
 def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water", bottom_id: str | None = "terrain",
-                  rock_attribute: str = "vertex_rock", roughness_attribute: str = "vertex_roughness") -> GBuffer:
+                  rock_attribute: str = "vertex_rock", roughness_attribute: str = "vertex_roughness",
+                  foam_attribute: str = "vertex_foam") -> GBuffer:
     """Cast the camera's pixel-centre rays into a loaded Mitsuba scene and fill a :class:`GBuffer`.
 
     Parameters
@@ -235,8 +241,8 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
         Mitsuba id of the seafloor/terrain shape; None or absent: no seafloor (open sea).
     rock_attribute : str
         Per-vertex rock coverage attribute of the seafloor mesh, if it has one.
-    roughness_attribute : str
-        Per-vertex Beckmann α attribute of the water mesh, if it has one.
+    roughness_attribute, foam_attribute : str
+        Per-vertex Beckmann α and fresh-foam coverage attributes of the water mesh, if it has them.
     """
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
@@ -269,11 +275,16 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
     cos_view = np.clip(np.sum(shading * -d, axis=-1), 0.0, 1.0)
 
     water = kind == KIND_WATER
-    roughness = np.zeros(len(d))
     water_shape = shapes[water_id]
-    if water.any() and water_shape.has_attribute(roughness_attribute):
-        values = np.array(water_shape.eval_attribute_1(roughness_attribute, si, mi.Bool(water)), dtype=np.float64)
-        roughness = np.where(water, np.clip(np.nan_to_num(values), 0.0, None), 0.0)
+
+    def water_attribute(name: str, top: float) -> NDArray:
+        if not (water.any() and water_shape.has_attribute(name)):
+            return np.zeros(len(d))
+        values = np.array(water_shape.eval_attribute_1(name, si, mi.Bool(water)), dtype=np.float64)
+        return np.where(water, np.clip(np.nan_to_num(values), 0.0, top), 0.0)
+
+    roughness = water_attribute(roughness_attribute, np.inf)
+    foam = water_attribute(foam_attribute, 1.0)
     refracted = np.where(water[:, None], refract(d, shading, 1.0 / n_water), 0.0)
     refracted = np.nan_to_num(refracted)
     depth = np.where(water, np.inf, 0.0)
@@ -310,4 +321,4 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
     return GBuffer(kind=image(kind), ray=image(d), position=image(position), normal=image(shading),
                    geo_normal=image(geo), distance=image(distance), cos_view=image(cos_view), depth=image(depth),
                    path_length=image(path), refracted=image(refracted), bottom_position=image(bottom_position),
-                   rock=image(rock), roughness=image(roughness))
+                   rock=image(rock), roughness=image(roughness), foam=image(foam))

@@ -107,11 +107,10 @@ def gbuffer_textures(gbuffer) -> dict[str, Texture]:
         data = np.concatenate([np.asarray(xyz, dtype=np.float32), np.asarray(w, dtype=np.float32)[..., None]], -1)
         return Texture(np.ascontiguousarray(data), linear=False)
 
-    zero = np.zeros(gbuffer.shape, dtype=np.float32)
     water = np.stack([gbuffer.depth, gbuffer.path_length, gbuffer.rock], axis=-1)
     return {"g_position": rgba(gbuffer.position, gbuffer.kind), "g_normal": rgba(gbuffer.normal, gbuffer.cos_view),
             "g_view": rgba(gbuffer.ray, gbuffer.distance), "g_water": rgba(water, gbuffer.roughness),
-            "g_refracted": rgba(gbuffer.refracted, zero)}
+            "g_refracted": rgba(gbuffer.refracted, gbuffer.foam)}
 
 
 class GLContext:

@@ -54,7 +54,7 @@ from .ripples import RipplePyramids, sample_ripples
 
 __all__ = ["sample_lut_1d", "sample_lut_2d", "sample_envmap", "fresnel_mix", "transmitted_colour",
            "distribution_Beckmann", "masking_Smith_Beckmann", "sun_glint", "RealtimeTerms", "realtime_terms",
-           "render_realtime", "FRESNEL_SOURCES", "RippleView", "surface_alpha"]
+           "render_realtime", "FRESNEL_SOURCES", "RippleView", "surface_alpha", "with_foam", "diffuse_light"]
 
 #: Lowest z of a reflected direction looked up in the sky map [-] (just above the horizon).
 HORIZON_Z = 1e-3
@@ -197,6 +197,8 @@ class RealtimeTerms:
     C_water : ndarray (H, W, 3)     Light from the water, T_refr (display RGB).
     glint : ndarray (H, W, 3)       The sun's glint on the water (display RGB), added after Eq. 20.
     other : ndarray (H, W, 3)       Colour of the pixels that are not water (sky, land).
+    foam : ndarray (H, W)           Fresh-foam coverage B of the water pixels [-].
+    foam_colour : ndarray (H, W, 3) Light from that foam, Lambertian under sun and sky (display RGB).
     """
 
     water: NDArray[np.bool_]
@@ -205,11 +207,22 @@ class RealtimeTerms:
     C_water: NDArray[np.float64]
     glint: NDArray[np.float64]
     other: NDArray[np.float64]
+    foam: NDArray[np.float64] | None = None
+    foam_colour: NDArray[np.float64] | None = None
 
     def image(self, gamma: float) -> NDArray[np.float64]:
         """The real-time image (H, W, 3) in linear display sRGB for the exponent γ."""
-        mixed = fresnel_mix(self.F, self.T_refl, self.C_water, gamma) + self.glint
+        mixed = with_foam(fresnel_mix(self.F, self.T_refl, self.C_water, gamma) + self.glint, self.foam,
+                          self.foam_colour)
         return np.where(self.water[..., None], mixed, self.other)
+
+
+def with_foam(water: NDArray, foam: NDArray | None, foam_colour: NDArray | None) -> NDArray[np.float64]:
+    """(1 − B) water + B foam: the renderer's blend of the water BSDF and Lambertian foam (``foamy_surface_bsdf``)."""
+    if foam is None:
+        return water
+    B = np.asarray(foam, dtype=np.float64)[..., None]
+    return (1.0 - B) * water + B * np.asarray(foam_colour, dtype=np.float64)
 
 
 @dataclass(frozen=True, eq=False)
@@ -300,12 +313,29 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
     other[sky] = sample_envmap(luts["sky"], gbuffer.ray[sky])
     land = kind == KIND_LAND
     if np.any(land):
-        n = gbuffer.normal[land]
-        light = (np.maximum(n @ sun, 0.0)[:, None] * luts.rgb("sun_irradiance_rgb")
-                 + ((1.0 + n[:, 2]) / 2.0)[:, None] * luts.rgb("sky_irradiance_rgb"))
-        other[land] = _albedo(luts, gbuffer.rock[land]) * light
+        other[land] = _albedo(luts, gbuffer.rock[land]) * diffuse_light(gbuffer.normal[land], luts)
+    foam = np.where(water, np.clip(gbuffer.foam, 0.0, 1.0), 0.0)
+    foam_colour = np.zeros(kind.shape + (3,))
+    if np.any(foam > 0) and luts.constants.get("foam_albedo_rgb") is not None:
+        foamy = foam > 0
+        foam_colour[foamy] = luts.rgb("foam_albedo_rgb") * diffuse_light(normal[foamy], luts)
+    else:
+        foam = np.zeros(kind.shape)
     return RealtimeTerms(water=water, F=F, T_refl=np.where(water[..., None], T_refl, 0.0),
-                         C_water=np.where(water[..., None], C_water, 0.0), glint=glints, other=other)
+                         C_water=np.where(water[..., None], C_water, 0.0), glint=glints, other=other, foam=foam,
+                         foam_colour=foam_colour)
+
+
+def diffuse_light(normal: NDArray, luts: LutSet) -> NDArray[np.float64]:
+    """Light on a white Lambertian surface of unit normals (N, 3): sun_rgb max(0, n·s) + sky_rgb (1 + n_z)/2.
+
+    The sky term is a uniform sky's irradiance on a tilted plane, (1 + n_z)/2 of
+    the horizontal one (the view factor of the upper hemisphere).
+    """
+    sun = np.asarray(luts.constants["sun_direction"], dtype=np.float64)
+    n = np.asarray(normal, dtype=np.float64)
+    return (np.maximum(n @ sun, 0.0)[:, None] * luts.rgb("sun_irradiance_rgb")
+            + ((1.0 + n[:, 2]) / 2.0)[:, None] * luts.rgb("sky_irradiance_rgb"))
 
 
 def surface_alpha(gbuffer: GBuffer, alpha_surface: float) -> NDArray[np.float64]:

@@ -35,7 +35,7 @@ from .luts import VisionState
 from .model import RippleView, render_realtime
 from .ripples import RipplePyramids, pixel_angle, ripple_pyramids
 
-__all__ = ["vision_from_constants", "lut_textures", "shader_uniforms", "ReferenceView", "ReferenceSet",
+__all__ = ["vision_from_constants", "lut_pyramids", "lut_textures", "source_digest", "shader_uniforms", "ReferenceView", "ReferenceSet",
            "read_reference_set", "ShaderRunner", "worst_regions", "FrameGrade", "grade_frame", "ShaderGrade",
            "validate_shader", "GAMMA_BOUNDS"]
 
@@ -89,6 +89,7 @@ def shader_uniforms(luts: LutSet, pyramids: RipplePyramids, angle: float, gamma:
             "u_gamma": float(gamma), "u_n_water": float(luts.n_water),
             "u_alpha": float(c["surface_roughness_alpha"]), "u_sun_direction": rgb("sun_direction"),
             "u_sun_rgb": rgb("sun_irradiance_rgb"), "u_sky_rgb": rgb("sky_irradiance_rgb"), "u_glint": int(glint),
+            "u_has_foam": int(c.get("foam_albedo_rgb") is not None), "u_foam_albedo": rgb("foam_albedo_rgb"),
             "u_ripple_patch": float(pyramids.patch_size), "u_ripple_strength": float(strength),
             "u_ripple_mss": float(pyramids.mean_square_slope), "u_pixel_angle": float(angle)}
 
@@ -247,6 +248,7 @@ class ShaderGrade:
     before, after : ErrorStats           Water pixels of all frames at γ and at the fitted γ.
     model_vs_reference : ErrorStats      The numpy model's own water ΔE at γ (the baseline).
     shader_vs_model : ErrorStats         Water pixels of all frames, shader against the numpy model.
+    all_vs_reference : ErrorStats        Every pixel of all frames (sky and land included), at γ.
     curve : tuple of (γ, mean ΔE)        The fit's grid.
     gamma_sensitive : bool               Whether the shader's image changes with ``u_gamma``.
     """

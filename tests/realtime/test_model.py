@@ -151,3 +151,24 @@ def test_unknown_fresnel_source_is_refused(coastal, rng):
 
 def test_small_settings_are_small():
     assert SMALL.depth_texels < 64  # keeps these tests fast
+
+
+def test_foam_blends_lambertian_foam_over_the_water(coastal, rng):
+    """B = 0: the water alone; B = 1: fresh foam's albedo under sun and sky; between: the linear blend
+    the renderer's blendbsdf makes (Koepke 1984's coverage model)."""
+    from dataclasses import replace
+
+    from oceanrender.realtime.model import diffuse_light
+
+    g = gbuffer(rng, KIND_WATER, depth=0.6, path=0.9)
+    water = render_realtime(g, coastal)
+    foam_rgb = coastal.rgb("foam_albedo_rgb")
+    assert np.all((foam_rgb > 0.45) & (foam_rgb < 0.6))  # fresh foam: 0.55 in the visible, less towards the red
+    light = diffuse_light(g.normal.reshape(-1, 3), coastal).reshape(g.normal.shape)
+    for B in (0.0, 0.3, 1.0):
+        foamy = render_realtime(replace(g, foam=np.full(g.shape, B)), coastal)
+        np.testing.assert_allclose(foamy, (1 - B) * water + B * foam_rgb * light, rtol=ROUNDOFF)
+    # Land and sky pixels ignore a foam value.
+    sky = gbuffer(rng, KIND_SKY)
+    np.testing.assert_array_equal(render_realtime(replace(sky, foam=np.ones(sky.shape)), coastal),
+                                  render_realtime(sky, coastal))

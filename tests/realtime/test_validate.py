@@ -70,13 +70,19 @@ def test_shipped_shader_matches_the_numpy_model(reference_sets, name):
     With ripples at 3× their strength, so that the LEAN terms, the tilted normals and the
     seafloor drift are exercised at every water pixel, not only where a pixel resolves them.
     """
+    from dataclasses import replace
+
     sets, _ = reference_sets
     references = read_reference_set(sets[name])
+    # The same views with foam on the water (a random coverage field): the foam blend is checked too.
+    rng = np.random.default_rng(7)
+    foamy = replace(references, views=[replace(v, gbuffer=replace(v.gbuffer, foam=rng.uniform(0, 1, v.gbuffer.shape)))
+                                       for v in references.views])
     context = GLContext()
     try:
-        for strength in (0.0, 1.0, 3.0):
-            runner = ShaderRunner(context, shipped_shader().read_text(), "water.frag", references.luts, strength)
-            grade = validate_shader(runner, references, fit_grid=5)
+        for strength, refs in ((0.0, references), (1.0, references), (3.0, references), (1.0, foamy)):
+            runner = ShaderRunner(context, shipped_shader().read_text(), "water.frag", refs.luts, strength)
+            grade = validate_shader(runner, refs, fit_grid=5)
             assert grade.shader_vs_model.mean <= 0.5
             # Both are float arithmetic of the same formulas and texels: what remains is float32 vs float64 and the
             # rasteriser's fixed-point filter weights, two orders of magnitude below the threshold.

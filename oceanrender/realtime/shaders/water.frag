@@ -3,6 +3,7 @@
 //
 //   C      = T_refl F^gamma + C_water (1 - F^gamma) + glint         (Eq. 20, glint added as a highlight)
 //   C_water = T0(h) + T1(h, l) * (R - R0)                            (Eq. 22; T0, T1 of Eq. 21 baked)
+//   on the fraction B of foam: (1 - B) C + B foam_albedo * (sun + sky light), as the renderer blends them
 //
 // with F the Fresnel reflectance at n.v (LUT), T_refl the sky map in the mirror direction, h the depth
 // of the water column, l the refracted view ray's path to the seafloor, R the seafloor albedo where it
@@ -29,7 +30,7 @@ uniform sampler2D g_normal;     // xyz: unit shading normal facing the camera [-
 uniform sampler2D g_view;       // xyz: unit camera-ray direction (camera -> scene) [-]; w: distance [m] (inf: sky)
 uniform sampler2D g_water;      // x: depth h [m]; y: in-water path l [m] (both inf: no seafloor); z: rock [0, 1];
                                 // w: Beckmann alpha of the surface at the hit (0: use u_alpha)
-uniform sampler2D g_refracted;  // xyz: unit refracted direction (water pixels) [-]
+uniform sampler2D g_refracted;  // xyz: unit refracted direction (water pixels) [-]; w: fresh-foam coverage B [0, 1]
 
 // ---- LUTs: float textures, LINEAR, CLAMP_TO_EDGE (sky: REPEAT in u); nodes at texel centres ------
 uniform sampler2D lut_T0;       // 1 row, columns: depth h on the rational axis u = h/(h + depth_scale)
@@ -55,6 +56,8 @@ uniform vec3 u_sun_direction;      // unit direction to the sun
 uniform vec3 u_sun_rgb;            // Phi(E_sun / pi), direct-normal sun (display RGB)
 uniform vec3 u_sky_rgb;            // Phi(E_sky / pi), diffuse sky on a horizontal plane (display RGB)
 uniform int u_glint;               // 1: add the sun's glint
+uniform int u_has_foam;            // 1: blend the G-buffer's foam coverage in
+uniform vec3 u_foam_albedo;        // fresh foam's albedo (display RGB)
 uniform float u_ripple_patch;      // side of the ripple tile [m]
 uniform float u_ripple_strength;   // k: scale of the ripple slopes (0: none) [-]
 uniform float u_ripple_mss;        // mean-square slope of the tile (top mip level) [-]
@@ -131,6 +134,10 @@ vec3 albedo(float rock) {
     return u_has_sand_rock == 1 ? mix(u_sand_albedo, u_rock_albedo, rock) : u_reference_albedo;
 }
 
+vec3 diffuse_light(vec3 n) {  // a white Lambertian surface: sun, and a uniform sky's (1 + n_z)/2
+    return max(dot(n, u_sun_direction), 0.0) * u_sun_rgb + 0.5 * (1.0 + n.z) * u_sky_rgb;
+}
+
 float seafloor_rock(vec2 xy) {
     ivec2 size = textureSize(lut_seafloor, 0);
     float u = (xy.x - u_seafloor_extent.x) / (u_seafloor_extent.y - u_seafloor_extent.x);
@@ -152,9 +159,7 @@ void main() {
     }
     if (kind == 2) {  // land seen directly: Lambertian under the sun and the sky
         float rock = texelFetch(g_water, pixel, 0).z;
-        vec3 n = N.xyz;
-        vec3 light = max(dot(n, u_sun_direction), 0.0) * u_sun_rgb + 0.5 * (1.0 + n.z) * u_sky_rgb;
-        frag_colour = vec4(albedo(rock) * light, 1.0);
+        frag_colour = vec4(albedo(rock) * diffuse_light(N.xyz), 1.0);
         return;
     }
     if (kind != 1) {
@@ -165,7 +170,9 @@ void main() {
     // ---- water -------------------------------------------------------------------------------------
     vec4 W = texelFetch(g_water, pixel, 0);
     float h = W.x, l = W.y, rock = W.z;
-    vec3 T = texelFetch(g_refracted, pixel, 0).xyz;
+    vec4 TB = texelFetch(g_refracted, pixel, 0);
+    vec3 T = TB.xyz;
+    float foam = u_has_foam == 1 ? clamp(TB.w, 0.0, 1.0) : 0.0;
     vec3 n = N.xyz;
     float alpha_surface = W.w > 0.0 ? W.w : u_alpha;  // a mesh with alpha per vertex: coarser, rougher far away
     float mu = clamp(N.w, 0.0, 1.0);
@@ -208,5 +215,6 @@ void main() {
     vec3 C_water = T0 + T1 * (albedo(rock) - u_reference_albedo);
     vec3 colour = T_refl * Fc + C_water * (1.0 - Fc);
     if (u_glint == 1) colour += sun_glint(n, -ray, alpha);
+    colour = mix(colour, u_foam_albedo * diffuse_light(n), foam);
     frag_colour = vec4(colour, 1.0);
 }
