@@ -4,10 +4,12 @@ What a fragment shader would do, in numpy, texel conventions included (so
 that a shader can be checked against it pixel by pixel):
 
 * water (open sea and coastal):
-  C = T_refl F_c + C_water (1 − F_c), F_c = F^γ                       (Eq. 20)
+  C = G₁ [T_refl F_c + C_water (1 − F_c)], F_c = F^γ                 (Eq. 20)
   with F from the Fresnel LUT at μ = n·v (or exact, for tests), T_refl the
   sky map in the mirror direction, and C_water = T_refr of Eq. 22
   T_refr = T0(h) + T1(h, l) ∘ (R − R0)                                (Eq. 22)
+  with G₁ Smith's masking of the unresolved roughness at the view (1 but
+  at grazing views; ``masking=False`` drops it), and
   where h is the depth of the water column, l the in-water path of the
   refracted view ray, R the seafloor albedo where it ends (display RGB) and R0
   the LUTs' reference albedo; without a seafloor (open sea, h = l = ∞) this is
@@ -250,7 +252,7 @@ def _albedo(luts: LutSet, rock: NDArray) -> NDArray[np.float64]:
 
 
 def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: bool = True,
-                   ripples: RippleView | None = None) -> RealtimeTerms:
+                   ripples: RippleView | None = None, masking: bool = True) -> RealtimeTerms:
     """Shade a G-buffer with the LUTs: the terms of Eq. 20 for water, final colours elsewhere.
 
     Parameters
@@ -268,6 +270,12 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
         Tilt the water's normals by the resolved ripples, keep the rest as the
         glint's roughness and look the seafloor up in the LUT set's
         ``seafloor`` map at the ripple-displaced point (when it has one).
+    masking : bool
+        Weight Eq. 20 by Smith's G₁(n·v) of the unresolved roughness α (Walter
+        et al. 2007, Eq. 27): the share of the rough surface the viewer sees.
+        The path tracer's microfacet BSDF (single scattering) drops the light
+        of the masked share, which matters at grazing views of a rough sea
+        (G₁ = 0.38 at 88° for α = 0.26) and not elsewhere (> 0.99 below 70°).
     """
     if fresnel not in FRESNEL_SOURCES:
         raise ValueError(f"fresnel: unknown source {fresnel!r}; known: {', '.join(map(repr, FRESNEL_SOURCES))}")
@@ -296,6 +304,7 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
     reflected[..., 2] = np.maximum(reflected[..., 2], HORIZON_Z)
     reflected /= np.linalg.norm(reflected, axis=-1, keepdims=True)
     T_refl = sample_envmap(luts["sky"], reflected)
+    visible = np.where(water, masking_Smith_Beckmann(mu, alpha), 1.0) if masking else np.ones(kind.shape)
     h = np.where(water, gbuffer.depth, np.inf)
     l = np.where(water, gbuffer.path_length, np.inf)
     T0 = sample_lut_1d(luts["T0"], h)
@@ -321,9 +330,9 @@ def realtime_terms(gbuffer: GBuffer, luts: LutSet, fresnel: str = "lut", glint: 
         foam_colour[foamy] = luts.rgb("foam_albedo_rgb") * diffuse_light(normal[foamy], luts)
     else:
         foam = np.zeros(kind.shape)
-    return RealtimeTerms(water=water, F=F, T_refl=np.where(water[..., None], T_refl, 0.0),
-                         C_water=np.where(water[..., None], C_water, 0.0), glint=glints, other=other, foam=foam,
-                         foam_colour=foam_colour)
+    return RealtimeTerms(water=water, F=F, T_refl=np.where(water[..., None], visible[..., None] * T_refl, 0.0),
+                         C_water=np.where(water[..., None], visible[..., None] * C_water, 0.0), glint=glints,
+                         other=other, foam=foam, foam_colour=foam_colour)
 
 
 def diffuse_light(normal: NDArray, luts: LutSet) -> NDArray[np.float64]:
@@ -363,7 +372,8 @@ def _seafloor_rock(luts: LutSet, gbuffer: GBuffer, water: NDArray, drift: NDArra
 
 
 def render_realtime(gbuffer: GBuffer, luts: LutSet, gamma: float | None = None, fresnel: str = "lut",
-                    glint: bool = True, ripples: RippleView | None = None) -> NDArray[np.float64]:
+                    glint: bool = True, ripples: RippleView | None = None, masking: bool = True
+                    ) -> NDArray[np.float64]:
     """The real-time model's image (H, W, 3), linear display sRGB; γ defaults to the LUT set's."""
-    return realtime_terms(gbuffer, luts, fresnel, glint, ripples).image(luts.gamma if gamma is None
-                                                                         else float(gamma))
+    terms = realtime_terms(gbuffer, luts, fresnel, glint, ripples, masking)
+    return terms.image(luts.gamma if gamma is None else float(gamma))

@@ -89,7 +89,7 @@ def shader_uniforms(luts: LutSet, pyramids: RipplePyramids, angle: float, gamma:
             "u_gamma": float(gamma), "u_n_water": float(luts.n_water),
             "u_alpha": float(c["surface_roughness_alpha"]), "u_sun_direction": rgb("sun_direction"),
             "u_sun_rgb": rgb("sun_irradiance_rgb"), "u_sky_rgb": rgb("sky_irradiance_rgb"), "u_glint": int(glint),
-            "u_has_foam": int(c.get("foam_albedo_rgb") is not None), "u_foam_albedo": rgb("foam_albedo_rgb"),
+            "u_masking": 1, "u_has_foam": int(c.get("foam_albedo_rgb") is not None), "u_foam_albedo": rgb("foam_albedo_rgb"),
             "u_ripple_patch": float(pyramids.patch_size), "u_ripple_strength": float(strength),
             "u_ripple_mss": float(pyramids.mean_square_slope), "u_pixel_angle": float(angle)}
 

@@ -52,7 +52,7 @@ def coastal():
 @pytest.mark.parametrize("gamma", [1.0, 0.6])
 def test_open_sea_with_exact_fresnel_is_eq_20(open_sea, rng, gamma):
     g = gbuffer(rng, KIND_WATER)
-    rgb = render_realtime(g, open_sea, gamma=gamma, fresnel="exact", glint=False)
+    rgb = render_realtime(g, open_sea, gamma=gamma, fresnel="exact", glint=False, masking=False)
     F = reflectance_Fresnel(g.cos_view, N_AIR, N) ** gamma
     sky = open_sea["sky"].data[0, 0].astype(np.float64)  # every texel holds the same colour
     deep = open_sea["T0"].data[0, -1].astype(np.float64)  # T0(h = ∞), the last texel
@@ -77,7 +77,7 @@ def test_coastal_water_is_eq_22(coastal, rng):
     h, l = 0.6, 0.9
     sand = gbuffer(rng, KIND_WATER, depth=h, path=l, rock=0.0)
     rock = gbuffer(rng, KIND_WATER, depth=h, path=l, rock=1.0)
-    a, b = realtime_terms(sand, coastal), realtime_terms(rock, coastal)
+    a, b = realtime_terms(sand, coastal, masking=False), realtime_terms(rock, coastal, masking=False)
     T0 = sample_lut_1d(coastal["T0"], h)
     T1 = sample_lut_2d(coastal["T1"], l, h)
     R0 = coastal.rgb("reference_albedo_rgb")
@@ -88,10 +88,10 @@ def test_coastal_water_is_eq_22(coastal, rng):
                                np.broadcast_to(T1 * (coastal.rgb("rock_albedo_rgb") - coastal.rgb("sand_albedo_rgb")),
                                                a.C_water.shape), rtol=0, atol=ROUNDOFF * np.abs(a.C_water).max())
     # A refracted ray that never meets the seafloor sees the water column only.
-    lost = realtime_terms(gbuffer(rng, KIND_WATER, depth=h, path=np.inf), coastal)
+    lost = realtime_terms(gbuffer(rng, KIND_WATER, depth=h, path=np.inf), coastal, masking=False)
     np.testing.assert_allclose(lost.C_water, np.broadcast_to(T0, lost.C_water.shape), rtol=ROUNDOFF)
     # Sand in thin water is brighter than sand under deep water, and rock darker than sand.
-    deep = realtime_terms(gbuffer(rng, KIND_WATER, depth=5.0, path=7.0), coastal)
+    deep = realtime_terms(gbuffer(rng, KIND_WATER, depth=5.0, path=7.0), coastal, masking=False)
     assert np.all(a.C_water.sum(-1) > deep.C_water.sum(-1)) and np.all(b.C_water.sum(-1) < a.C_water.sum(-1))
 
 
@@ -114,7 +114,7 @@ def test_reflections_below_the_horizon_see_the_horizon_sky(coastal, rng):
     steep = GBuffer(**{**g.__dict__, "ray": ray, "normal": normal, "cos_view": np.sum(normal * -ray, -1)})
     mirror = ray + 2 * steep.cos_view[..., None] * normal
     assert np.all(steep.cos_view > 0) and np.all(mirror[..., 2] < 0)  # seen from the front, mirrored into the sea
-    T_refl = realtime_terms(steep, coastal).T_refl
+    T_refl = realtime_terms(steep, coastal, masking=False).T_refl
     assert np.all(T_refl.sum(-1) > 0)
     horizon = mirror.copy()
     horizon[..., 2] = 1e-3
@@ -172,3 +172,23 @@ def test_foam_blends_lambertian_foam_over_the_water(coastal, rng):
     sky = gbuffer(rng, KIND_SKY)
     np.testing.assert_array_equal(render_realtime(replace(sky, foam=np.ones(sky.shape)), coastal),
                                   render_realtime(sky, coastal))
+
+
+def test_masking_weights_eq_20_by_smiths_g1_of_the_view(coastal, rng):
+    """With masking, the water's Eq. 20 terms are G₁(n·v; α) times those without (Walter et al. 2007, Eq. 27):
+    ≈ 1 at steep views, well below 1 at grazing ones."""
+    from oceanrender.realtime.model import masking_Smith_Beckmann
+
+    g = gbuffer(rng, KIND_WATER, depth=0.6, path=0.9)
+    alpha = coastal.constants["surface_roughness_alpha"]
+    with_, without = realtime_terms(g, coastal), realtime_terms(g, coastal, masking=False)
+    G = masking_Smith_Beckmann(g.cos_view, alpha)[..., None]
+    np.testing.assert_allclose(with_.T_refl, G * without.T_refl, rtol=ROUNDOFF)
+    np.testing.assert_allclose(with_.C_water, G * without.C_water, rtol=ROUNDOFF)
+    np.testing.assert_array_equal(with_.glint, without.glint)  # the glint has its own G₁(v) G₁(s)
+    # Walter et al.'s rational G₁ at a = cot θ / α: 1 for a ≥ 1.6; 0.38 at a = 0.134 (88°, α = 0.26).
+    assert masking_Smith_Beckmann(np.cos(np.radians(60.0)), 0.2) == 1.0
+    a = 1.0 / (0.26 * np.tan(np.radians(88.0)))
+    expected = (3.535 * a + 2.181 * a**2) / (1 + 2.276 * a + 2.577 * a**2)
+    assert expected == pytest.approx(0.3802, abs=1e-4)
+    assert masking_Smith_Beckmann(np.cos(np.radians(88.0)), 0.26) == pytest.approx(expected, rel=ROUNDOFF)

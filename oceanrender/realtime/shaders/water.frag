@@ -1,7 +1,8 @@
 #version 330 core
 // oceanrender's reference water shader: the dissertation's real-time model on the baked LUTs.
 //
-//   C      = T_refl F^gamma + C_water (1 - F^gamma) + glint         (Eq. 20, glint added as a highlight)
+//   C      = G1 [T_refl F^gamma + C_water (1 - F^gamma)] + glint    (Eq. 20, glint added as a highlight;
+//            G1: Smith's masking of the unresolved roughness at the view, as the path tracer's BSDF has it)
 //   C_water = T0(h) + T1(h, l) * (R - R0)                            (Eq. 22; T0, T1 of Eq. 21 baked)
 //   on the fraction B of foam: (1 - B) C + B foam_albedo * (sun + sky light), as the renderer blends them
 //
@@ -56,6 +57,7 @@ uniform vec3 u_sun_direction;      // unit direction to the sun
 uniform vec3 u_sun_rgb;            // Phi(E_sun / pi), direct-normal sun (display RGB)
 uniform vec3 u_sky_rgb;            // Phi(E_sky / pi), diffuse sky on a horizontal plane (display RGB)
 uniform int u_glint;               // 1: add the sun's glint
+uniform int u_masking;             // 1: weight Eq. 20 by Smith's G1(n.v) of the unresolved roughness
 uniform int u_has_foam;            // 1: blend the G-buffer's foam coverage in
 uniform vec3 u_foam_albedo;        // fresh foam's albedo (display RGB)
 uniform float u_ripple_patch;      // side of the ripple tile [m]
@@ -214,6 +216,7 @@ void main() {
     vec3 T1 = floor_hit ? sample_2d(lut_T1, rational_u(l, u_path_scale), uh) : vec3(0.0);
     vec3 C_water = T0 + T1 * (albedo(rock) - u_reference_albedo);
     vec3 colour = T_refl * Fc + C_water * (1.0 - Fc);
+    if (u_masking == 1) colour *= smith_g1(mu, alpha);
     if (u_glint == 1) colour += sun_glint(n, -ray, alpha);
     colour = mix(colour, u_foam_albedo * diffuse_light(n), foam);
     frag_colour = vec4(colour, 1.0);
