@@ -124,12 +124,44 @@ class RenderSettings(_Section):
         return value
 
 
+#: Peak periods a sea-state form accepts [s] (from short wind chop to the longest ocean swell).
+TP_RANGE = (1.0, 30.0)
+#: Frequency spectra that the sea-state form (hs, tp) and partitions accept.
+SEA_STATE_SPECTRA = ("JONSWAP 1973", "Pierson-Moskowitz 1964", "TMA 1985")
+
+
+class PartitionSettings(_Section):
+    """One partition of a sea given by its statistics (``[[ocean.partitions]]``): a swell or a second wind sea.
+
+    S(f) of ``spectrum`` scaled to Hs = 4 √m0 exactly, peaked at 1/Tp, spread
+    about ``direction`` by cos^{2s}((θ − θ_m)/2).
+    """
+
+    spectrum: Literal["JONSWAP 1973", "Pierson-Moskowitz 1964", "TMA 1985"] = "JONSWAP 1973"
+    hs: float = Field(gt=0, le=30, description="significant wave height Hs = 4 √m0 [m]")
+    tp: float = Field(ge=TP_RANGE[0], le=TP_RANGE[1], description="peak period [s]")
+    gamma: float = Field(3.3, ge=1, le=10, description="JONSWAP/TMA peak enhancement γ [-]")
+    sigma_a: float = Field(0.07, gt=0, le=0.5, description="JONSWAP peak width below the peak σ_a [-]")
+    sigma_b: float = Field(0.09, gt=0, le=0.5, description="JONSWAP peak width above the peak σ_b [-]")
+    direction: float = Field(0.0, ge=-360, le=360, description="mean direction of travel, counter-clockwise from +x [deg]")
+    spreading_s: float = Field(10.0, ge=0, le=1000, description="cos-2s spreading parameter s [-] (wind sea ~10, swell 25-75)")
+
+
 class OceanSettings(_Section):
     """Open-sea geometry: the wave spectrum and how the surface is synthesised.
 
     ``model = "FFT"`` is Tessendorf's FFT sea, as ``cascades`` patches of
     incommensurate sizes (the largest is ``patch_size``); "sum of sines" and
     "Gerstner" draw ``wave_count`` components from the same spectrum.
+
+    The sea is given in exactly one of three forms (docs/geometry.md, "Sea states"):
+
+    * **wind**: ``wind_speed`` (U₁₀, at 10 m) and ``fetch`` (the default);
+    * **sea state**: ``hs`` and ``tp`` (with ``gamma``, ``sigma_a``, ``sigma_b``,
+      ``direction``, ``spreading_s``) for ``spectrum`` JONSWAP/TMA/Pierson–Moskowitz,
+      plus any ``[[ocean.partitions]]`` (swells);
+    * **file**: ``spectrum_file``, a measured or modelled E(f, θ) read with
+      wavespectra, at ``spectrum_time`` and ``spectrum_site``.
     """
 
     model: Literal["FFT", "sum of sines", "Gerstner"] = "FFT"
@@ -160,6 +192,21 @@ class OceanSettings(_Section):
     gerstner_steepness: float = Field(0.8, ge=0, le=3, description="Gerstner steepness q [-]")
     fractal_gamma: float = Field(0.0, ge=0, le=2, description="weight γ of the fractal detail ζ = η + γ η_fractal [-]; 0 = off")
     fractal_size: int = Field(512, ge=16, le=4096, description="points per side of the periodic fractal tile (power of 2)")
+    surface_tension: float = Field(0.0, ge=0, le=0.1, description="surface tension σ of the dispersion relation "
+                                   "ω² = (g k + σ k³/ρ) tanh(k d) [N m⁻¹]; 0 = gravity waves only, 0.074 = sea water")
+    hs: float | None = Field(None, gt=0, le=30, description="sea-state form: significant wave height Hs = 4 √m0 [m]")
+    tp: float | None = Field(None, ge=TP_RANGE[0], le=TP_RANGE[1], description="sea-state form: peak period [s]")
+    sigma_a: float = Field(0.07, gt=0, le=0.5, description="sea-state form: JONSWAP peak width below the peak [-]")
+    sigma_b: float = Field(0.09, gt=0, le=0.5, description="sea-state form: JONSWAP peak width above the peak [-]")
+    direction: float | None = Field(None, ge=-360, le=360, description="sea-state form: mean direction of travel, "
+                                    "counter-clockwise from +x [deg] (default: wind_direction)")
+    spreading_s: float = Field(10.0, ge=0, le=1000, description="sea-state form: cos-2s spreading parameter s [-]")
+    partitions: tuple[PartitionSettings, ...] = Field((), description="sea-state form: further partitions (swells)")
+    spectrum_file: str | None = Field(None, description="file form: a 2-D spectrum E(f, θ) that wavespectra reads")
+    spectrum_format: Literal["auto", "swan", "ww3", "netcdf", "octopus", "ncswan", "era5", "wwm", "json"] = Field(
+        "auto", description="file form: wavespectra reader (auto: from the file name)")
+    spectrum_time: str | None = Field(None, description="file form: time of the spectrum, ISO 8601 (default: the first)")
+    spectrum_site: int = Field(0, ge=0, description="file form: index of the site in the file [-]")
 
     @field_validator("fractal_size")
     @classmethod
@@ -187,7 +234,44 @@ class OceanSettings(_Section):
             raise ValueError("alpha follows from the wave age and wind stress for 'Elfouhaily 1997'; leave it out")
         if self.gamma != 3.3 and self.spectrum == "Elfouhaily 1997":
             raise ValueError("gamma follows from the inverse wave age for 'Elfouhaily 1997'; leave it out")
+        # NOTE: by value, not by the keys a file named: a scene re-validated with overrides names every key.
+        given = {name for name, info in type(self).model_fields.items() if getattr(self, name) != info.default}
+        if self.spectrum in ("Phillips 2001", "Pierson-Moskowitz 1964") and given & {"fetch", "gamma"}:
+            raise ValueError(f"{' and '.join(sorted(given & {'fetch', 'gamma'}))}: {self.spectrum!r} has no fetch "
+                             "law or peak enhancement; leave it out")
+        wind = given & {"wind_speed", "fetch", "swell_height", "swell_period", "swell_direction", "swell_spreading_s"}
+        state = given & {"hs", "tp", "sigma_a", "sigma_b", "direction", "spreading_s", "partitions"}
+        file = given & {"spectrum_file", "spectrum_format", "spectrum_time", "spectrum_site"}
+        forms = [name for name, keys in (("wind (wind_speed, fetch)", wind), ("sea state (hs, tp)", state),
+                                         ("file (spectrum_file)", file)) if keys]
+        if len(forms) > 1:
+            keys = ", ".join(sorted(wind | state | file))
+            raise ValueError(f"give the sea in exactly one form, got {' and '.join(forms)} ({keys})")
+        if state:
+            if self.hs is None or self.tp is None:
+                raise ValueError("the sea-state form needs both hs [m] and tp [s]")
+            if self.spectrum not in SEA_STATE_SPECTRA:
+                raise ValueError(f"the sea-state form (hs, tp) takes spectrum {' or '.join(map(repr, SEA_STATE_SPECTRA))}, "
+                                 f"got {self.spectrum!r}")
+            if self.spreading is not None:
+                raise ValueError("the sea-state form spreads with cos-2s (spreading_s); leave spreading out")
+            if self.alpha is not None:
+                raise ValueError("alpha follows from hs and tp in the sea-state form; leave it out")
+        if file and self.spectrum_file is None:
+            raise ValueError("spectrum_format, spectrum_time and spectrum_site need spectrum_file")
+        if file and given & {"spectrum", "spreading", "gamma", "alpha", "wind_direction"}:
+            extra = ", ".join(sorted(given & {"spectrum", "spreading", "gamma", "alpha", "wind_direction"}))
+            raise ValueError(f"the file form takes the spectrum from spectrum_file; leave out {extra}")
+        if self.surface_tension > 0 and self.model != "FFT":
+            raise ValueError("surface_tension is applied by model 'FFT' only")
         return self
+
+    @property
+    def form(self) -> str:
+        """How the sea is given: ``"wind"``, ``"sea state"`` or ``"file"``."""
+        if self.spectrum_file is not None:
+            return "file"
+        return "sea state" if self.hs is not None else "wind"
 
 
 class MeshSettings(_Section):
@@ -1033,6 +1117,11 @@ def resolve_scene_paths(data: dict, folder: Path) -> None:
         value = water.get("iop_table")
         if isinstance(value, str) and "/" in value and "\x00" not in value:
             water["iop_table"] = os.path.abspath(folder / value)
+    ocean = data.get("ocean")
+    if isinstance(ocean, dict):
+        value = ocean.get("spectrum_file")
+        if isinstance(value, str) and value and "\x00" not in value:
+            ocean["spectrum_file"] = os.path.abspath(folder / value)
     environment = data.get("environment")
     if isinstance(environment, dict):
         value = environment.get("map")

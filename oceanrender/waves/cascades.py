@@ -461,6 +461,8 @@ class CascadeOcean:
         Horizontal displacement scale λ [-].
     depth : float, optional
         Water depth of the dispersion relation [m].
+    surface_tension : float, optional
+        Surface tension σ of the dispersion relation [N m⁻¹]; 0: gravity waves.
     loop_period : float, optional
         Period after which the whole sea repeats [s] (same T for every patch).
     band_edges : sequence of float, optional
@@ -493,6 +495,7 @@ class CascadeOcean:
     loop_period: float | None = None
     band_edges: tuple[float, ...] | None = None
     g: float = GRAVITY
+    surface_tension: float = 0.0
     dtype: DTypeLike = np.float32
     fft_backend: str = "auto"
     workers: int | None = None
@@ -525,7 +528,7 @@ class CascadeOcean:
         edges = self.band_edges
         return tuple(
             FFTOcean(grid, seed=self.seed, choppiness=self.choppiness, depth=self.depth, g=self.g,
-                     dtype=self.dtype,
+                     surface_tension=self.surface_tension, dtype=self.dtype,
                      spectrum_function=BandLimitedSpectrum(self.spectrum, edges[i], edges[i + 1], grid.dk),
                      loop_period=self.loop_period, cascade=i, fft_backend=self.fft_backend, workers=self.workers)
             for i, grid in enumerate(self.grids)

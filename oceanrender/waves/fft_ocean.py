@@ -55,7 +55,7 @@ import scipy.fft
 from numpy.typing import ArrayLike, DTypeLike, NDArray
 
 from .noise import mode_gaussian
-from .wave_spectra import GRAVITY, PHILLIPS_ALPHA, SPECTRA, dispersion_relation, wave_spectrum
+from .wave_spectra import GRAVITY, SPECTRA, dispersion_relation, make_spectrum
 
 __all__ = [
     "OceanGrid",
@@ -936,15 +936,22 @@ class FFTOcean:
     choppiness : float, optional
         Horizontal displacement scale λ [-].
     depth : float, optional
-        Water depth used in the dispersion relation [m]; ``np.inf`` for deep water.
-    alpha : float, optional
-        Phillips constant α [-].
+        Water depth [m]; ``np.inf`` for deep water. It enters the dispersion
+        relation and, for the frequency spectra, their transform to Ψ(k) and
+        TMA's depth function ("Phillips 2001" is a deep-water spectrum: there
+        the depth is the dispersion relation's only).
+    alpha : float or None, optional
+        Phillips constant α [-] ("Phillips 2001", "Pierson-Moskowitz 1964";
+        None: the spectrum's default; an error for the fetch-law spectra).
     small_wave_length : float, optional
         Small-wave suppression length ℓ [m].
     spectrum : str, optional
         Name of the wave spectrum, a key of :data:`oceanrender.waves.wave_spectra.SPECTRA`.
     g : float, optional
         Gravitational acceleration [m s⁻²].
+    surface_tension : float, optional
+        Surface tension σ [N m⁻¹] of the dispersion relation ω² = (g k + σk³/ρ) tanh kd;
+        0 (default): gravity waves.
     dtype : dtype_like, optional
         Precision of the fields: ``np.float32`` (default, rendering) or ``np.float64``.
     spectrum_function : callable, optional
@@ -966,8 +973,9 @@ class FFTOcean:
 
     Notes
     -----
-    The depth only enters the dispersion relation; the spectrum is whatever
-    ``spectrum_function`` (or the deep-water Phillips spectrum) returns.
+    A named spectrum is built by :func:`~oceanrender.waves.wave_spectra.make_spectrum`,
+    the same function the scene files use, so every parameter it cannot use
+    is an error rather than silently dropped.
 
     Examples
     --------
@@ -982,10 +990,11 @@ class FFTOcean:
     seed: int = 0
     choppiness: float = 1.0
     depth: float = np.inf
-    alpha: float = PHILLIPS_ALPHA
+    alpha: float | None = None
     small_wave_length: float = 0.0
     spectrum: str = "Phillips 2001"
     g: float = GRAVITY
+    surface_tension: float = 0.0
     dtype: DTypeLike = np.float32
     spectrum_function: Callable[[NDArray, NDArray], NDArray] | None = None
     loop_period: float | None = None
@@ -1020,17 +1029,15 @@ class FFTOcean:
         if self.spectrum_function is not None:
             psi = np.asarray(self.spectrum_function(self.grid.kx, self.grid.ky), dtype=np.float64)
             return _read_only(np.broadcast_to(psi, self.grid.kx.shape).copy())
-        psi = wave_spectrum(
-            self.spectrum,
-            self.grid.kx,
-            self.grid.ky,
-            wind_speed=self.wind_speed,
-            wind_direction=self.wind_direction,
-            alpha=self.alpha,
-            small_wave_length=self.small_wave_length,
-            g=self.g,
-        )
-        return _read_only(psi)
+        parameters = {"wind_speed": self.wind_speed, "wind_direction": self.wind_direction,
+                      "small_wave_length": self.small_wave_length, "g": self.g,
+                      "surface_tension": self.surface_tension}
+        if self.alpha is not None:
+            parameters["alpha"] = self.alpha
+        if self.spectrum != "Phillips 2001":  # Phillips is deep water: the depth is the dispersion's alone
+            parameters["depth"] = self.depth
+        psi = make_spectrum(self.spectrum, **parameters)(self.grid.kx, self.grid.ky)
+        return _read_only(np.asarray(psi, dtype=np.float64))
 
     @cached_property
     def h0(self) -> NDArray[np.complex128]:
@@ -1040,7 +1047,7 @@ class FFTOcean:
     @cached_property
     def omega(self) -> NDArray[np.float64]:
         """Angular frequency ω(|k|) on the lattice, quantised with ``loop_period`` [rad s⁻¹]."""
-        omega = dispersion_relation(self.grid.k, self.depth, self.g)
+        omega = dispersion_relation(self.grid.k, self.depth, self.g, self.surface_tension)
         return _read_only(quantised_frequency(omega, self.loop_period))
 
     @property

@@ -27,26 +27,44 @@ from .gerstner import gerstner_fields, sum_of_sines_fields, wave_components_from
 from .lod import LEVEL_POINTS_PER_WAVELENGTH, CascadeLevels, GainCompensated
 from .query import Sampler, SurfaceSample
 from .roughness import elevation_variance, unresolved_slope_variance
-from .wave_spectra import DirectionalSpectrum
+from .sea_state import Partition, PartitionedSpectrum, TabulatedSpectrum
+from .wave_spectra import DirectionalSpectrum, make_spectrum
 
 
-def directional_spectrum(ocean: OceanSettings) -> DirectionalSpectrum:
-    """The scene's directional wavenumber spectrum Ψ(kx, ky) [m⁴] (angles converted to rad)."""
-    return DirectionalSpectrum(
-        method=ocean.spectrum,
-        spreading=ocean.spreading,
-        wind_speed=ocean.wind_speed,
-        wind_direction=math.radians(ocean.wind_direction),
-        fetch=ocean.fetch,
-        gamma=ocean.gamma,
-        depth=ocean.wave_depth,
-        small_wave_length=ocean.small_wave_length,
-        alpha=ocean.alpha,
-        swell_height=ocean.swell_height,
-        swell_period=ocean.swell_period,
-        swell_direction=math.radians(ocean.swell_direction),
-        swell_spreading_s=ocean.swell_spreading_s,
-    )
+def directional_spectrum(ocean: OceanSettings):
+    """The scene's directional wavenumber spectrum Ψ(kx, ky) [m⁴] (angles converted to rad), in its form.
+
+    * wind: :func:`~.wave_spectra.make_spectrum` (a :class:`DirectionalSpectrum`);
+    * sea state: a :class:`~.sea_state.PartitionedSpectrum` of (hs, tp, ...) and ``partitions``;
+    * file: a :class:`~.sea_state.TabulatedSpectrum` of the file's E(f, θ) at the time and site.
+    """
+    common = {"depth": ocean.wave_depth, "small_wave_length": ocean.small_wave_length,
+              "surface_tension": ocean.surface_tension}
+    if ocean.form == "file":
+        from ..io.spectrum_files import read_spectrum_file  # noqa: PLC0415
+
+        table = read_spectrum_file(ocean.spectrum_file, ocean.spectrum_format, ocean.spectrum_time,
+                                   ocean.spectrum_site)
+        return TabulatedSpectrum(frequency=table.frequency, direction=table.direction, table=table.density,
+                                 **common)
+    if ocean.form == "sea state":
+        direction = ocean.wind_direction if ocean.direction is None else ocean.direction
+        first = Partition(ocean.spectrum, ocean.hs, ocean.tp, ocean.gamma, ocean.sigma_a, ocean.sigma_b,
+                          math.radians(direction), ocean.spreading_s)
+        rest = tuple(Partition(p.spectrum, p.hs, p.tp, p.gamma, p.sigma_a, p.sigma_b, math.radians(p.direction),
+                               p.spreading_s) for p in ocean.partitions)
+        return PartitionedSpectrum(partitions=(first,) + rest, **common)
+    swell = {"swell_height": ocean.swell_height, "swell_period": ocean.swell_period,
+             "swell_direction": math.radians(ocean.swell_direction), "swell_spreading_s": ocean.swell_spreading_s}
+    wind = {"spreading": ocean.spreading, "wind_speed": ocean.wind_speed,
+            "wind_direction": math.radians(ocean.wind_direction), **swell, **common}
+    if ocean.spectrum not in ("Phillips 2001", "Pierson-Moskowitz 1964"):
+        wind.update(fetch=ocean.fetch, gamma=ocean.gamma)
+    if ocean.alpha is not None:
+        wind["alpha"] = ocean.alpha
+    if ocean.spectrum == "Phillips 2001":
+        wind.pop("depth")  # deep water by definition: the depth is the dispersion relation's (SeaSurface)
+    return make_spectrum(ocean.spectrum, **wind)
 
 
 #: Shortest wave of the spectrum counted in its total slope variance [m] (gravity–capillary waves;
@@ -179,7 +197,7 @@ class SeaSurface:
             grids = [OceanGrid(ocean.resolution, size) for size in sizes]
             self.cascades = CascadeOcean(
                 self.spectrum, sizes, resolution=ocean.resolution, seed=ocean.seed, choppiness=ocean.choppiness,
-                depth=ocean.wave_depth, loop_period=ocean.loop_period or None,
+                depth=ocean.wave_depth, surface_tension=ocean.surface_tension, loop_period=ocean.loop_period or None,
                 band_edges=cascade_band_edges_resolved(grids, LEVEL_POINTS_PER_WAVELENGTH),
             )
             edges = self.cascades.band_edges
@@ -216,7 +234,7 @@ class SeaSurface:
             if k_max < band_top:
                 band = BandLimitedSpectrum(band, 0.0, k_max)
             return FFTOcean(grid, seed=ocean.seed, choppiness=ocean.choppiness, depth=ocean.wave_depth,
-                            dtype=self.cascades.dtype, loop_period=ocean.loop_period or None, cascade=cascade,
+                            surface_tension=ocean.surface_tension, dtype=self.cascades.dtype, loop_period=ocean.loop_period or None, cascade=cascade,
                             spectrum_function=GainCompensated(band, grid.spacing))
 
         return make

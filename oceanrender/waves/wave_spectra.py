@@ -83,6 +83,7 @@ __all__ = [
     "frequency_spectrum",
     "DirectionalSpectrum",
     "wave_spectrum",
+    "make_spectrum",
 ]
 
 GRAVITY: float = 9.81
@@ -1035,12 +1036,18 @@ class DirectionalSpectrum:
         in (0, 0.5]; see :func:`spectrum_swell`.
     g : float, optional
         Gravitational acceleration [m s⁻²], in (0, inf).
+    surface_tension : float, optional
+        Surface tension σ of the dispersion relation [N m⁻¹], in [0, inf); 0
+        (default) is gravity waves only. It enters ω(k) and c_g(k) of the
+        frequency spectra's transform to Ψ(k).
 
     Raises
     ------
     ValueError
         Naming the field and its allowed range, for any value out of range or
-        an unknown method or spreading name.
+        an unknown method or spreading name; and for a parameter the method
+        cannot use (fetch or γ for "Phillips 2001" and "Pierson-Moskowitz 1964",
+        α for the fetch-law spectra, a finite depth for "Phillips 2001").
 
     Notes
     -----
@@ -1093,6 +1100,7 @@ class DirectionalSpectrum:
     swell_spreading_s: float = 25.0
     swell_bandwidth: float = 0.05
     g: float = GRAVITY
+    surface_tension: float = 0.0
 
     def __post_init__(self) -> None:
         if self.method not in SPECTRA:
@@ -1150,6 +1158,14 @@ class DirectionalSpectrum:
         w = self.swell_bandwidth
         _require("swell_bandwidth", w, finite(w) and 0 < w <= 0.5, "in (0, 0.5] [-]")
         _require("g", self.g, finite(self.g) and self.g > 0, "in (0, inf) [m s⁻²]")
+        _require("surface_tension", self.surface_tension, finite(self.surface_tension) and self.surface_tension >= 0,
+                 "in [0, inf) [N m⁻¹]")
+        defaults = {f.name: f.default for f in dataclasses.fields(DirectionalSpectrum)}
+        unused = {"Phillips 2001": ("fetch", "gamma"), "Pierson-Moskowitz 1964": ("fetch", "gamma")}
+        for name in unused.get(self.method, ()):
+            if getattr(self, name) != defaults[name]:
+                raise ValueError(f"{name}: {self.method!r} does not use it (it has no fetch law); leave it out, "
+                                 f"got {getattr(self, name)!r}")
 
     # -- derived parameters --------------------------------------------------
 
@@ -1214,12 +1230,14 @@ class DirectionalSpectrum:
         if self.method == "Elfouhaily 1997":
             omni = omnidirectional_spectrum_Elfouhaily1997(k, self.wind_speed, self.fetch, g=self.g)
             with np.errstate(invalid="ignore"):  # ω = 0: S = 0, c_g = inf
-                return np.where((omega <= 0) | (omni == 0), 0.0, omni / group_velocity(k, self.depth, self.g))
+                return np.where((omega <= 0) | (omni == 0), 0.0,
+                                omni / group_velocity(k, self.depth, self.g, self.surface_tension))
         alpha = PHILLIPS_ALPHA if self.alpha is None else self.alpha
         L_w = self.wind_speed**2 / self.g
         with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
             x = 1 / np.square(k * L_w)
-            omni = alpha / 2 * k**-3.0 * np.exp(-x) / group_velocity(k, self.depth, self.g)  # F(k) dk/dω
+            omni = alpha / 2 * k**-3.0 * np.exp(-x) / group_velocity(k, self.depth, self.g,
+                                                                       self.surface_tension)  # F(k) dk/dω
         return np.where((omega <= 0) | (x > 700), 0.0, omni)
 
     def frequency_spectrum(self, omega: ArrayLike) -> NDArray[np.float64]:
@@ -1271,10 +1289,10 @@ class DirectionalSpectrum:
             )
             if self.swell_height == 0:
                 return psi
-        omega = dispersion_relation(k, self.depth, self.g)
+        omega = dispersion_relation(k, self.depth, self.g, self.surface_tension)
         suppression = np.exp(-np.square(k * self.small_wave_length))  # Eq. 24 of Tessendorf (2001)
         with np.errstate(over="ignore"):  # k → 0: c_g/k → inf where S = 0, masked below
-            jacobian = group_velocity(k, self.depth, self.g) / k  # dω/dk / k: S dω dθ = Ψ k dk dθ
+            jacobian = group_velocity(k, self.depth, self.g, self.surface_tension) / k  # S dω dθ = Ψ k dk dθ
 
         def density(variance: NDArray[np.float64], spreading: NDArray[np.float64]) -> NDArray[np.float64]:
             with np.errstate(invalid="ignore"):
@@ -1386,14 +1404,6 @@ def _finite(value) -> bool:
     return _number(value) and bool(np.isfinite(float(value)))
 
 
-def _accepted_fields(method: str) -> set[str]:
-    """Fields of :class:`DirectionalSpectrum` that :func:`wave_spectrum` forwards for a method."""
-    fields = {field.name for field in dataclasses.fields(DirectionalSpectrum)} - {"method"}
-    if method in ("JONSWAP 1973", "TMA 1985"):
-        fields.discard("alpha")  # α comes from the fetch law
-    return fields
-
-
 def wave_spectrum(method: str, kx: ArrayLike, ky: ArrayLike, **kwargs) -> NDArray[np.float64]:
     """Directional wavenumber spectrum Ψ(kx, ky) [m⁴] by method name.
 
@@ -1404,8 +1414,10 @@ def wave_spectrum(method: str, kx: ArrayLike, ky: ArrayLike, **kwargs) -> NDArra
     kx, ky : array_like
         Wavenumber components [rad m⁻¹].
     **kwargs
-        Parameters of the method; keywords it does not accept are ignored, so one
-        set of settings can be passed to any method.
+        Parameters of the method: the fields of :class:`DirectionalSpectrum`.
+        A keyword that is not one, or that the method cannot use, is an error
+        (the same rules as the scene files, which build their spectra through
+        :class:`DirectionalSpectrum` too).
 
     Returns
     -------
@@ -1429,12 +1441,27 @@ def wave_spectrum(method: str, kx: ArrayLike, ky: ArrayLike, **kwargs) -> NDArra
     built from the keywords that are its fields (``spreading``, ``fetch``,
     ``gamma``, ``depth``, swell, ...; ``alpha`` is dropped for JONSWAP and TMA).
     """
+    return make_spectrum(method, **kwargs)(kx, ky)
+
+
+def make_spectrum(method: str, **parameters) -> DirectionalSpectrum:
+    """The one way to build a wind-driven spectrum by name: a :class:`DirectionalSpectrum`, strictly.
+
+    An unknown keyword, or one the method cannot use (see
+    :class:`DirectionalSpectrum`, Raises), is a ValueError naming it; the
+    Python API (:class:`~oceanrender.waves.fft_ocean.FFTOcean`,
+    :func:`wave_spectrum`) and scene files (:func:`oceanrender.waves.sea.directional_spectrum`)
+    all come here.
+    """
     if method not in SPECTRA:
         raise ValueError(f"unknown wave spectrum {method!r}; known: {', '.join(map(repr, SPECTRA))}")
-    if method in WAVENUMBER_SPECTRA:
-        function = WAVENUMBER_SPECTRA[method]
-        accepted = inspect.signature(function).parameters
-        return function(kx, ky, **{key: value for key, value in kwargs.items() if key in accepted})
-    accepted = _accepted_fields(method)
-    spectrum = DirectionalSpectrum(method, **{key: value for key, value in kwargs.items() if key in accepted})
-    return spectrum(kx, ky)
+    known = {f.name for f in dataclasses.fields(DirectionalSpectrum)} - {"method"}
+    unknown = sorted(set(parameters) - known)
+    if unknown:
+        raise ValueError(f"{unknown[0]}: not a parameter of a wave spectrum (known: {', '.join(sorted(known))})")
+    if method == "Phillips 2001" and np.isfinite(parameters.get("depth", np.inf)):
+        raise ValueError("depth: 'Phillips 2001' is a deep-water wavenumber spectrum; give the depth to the "
+                         "dispersion relation (FFTOcean depth) or use 'TMA 1985'")
+    if method in ("JONSWAP 1973", "TMA 1985", "Elfouhaily 1997") and parameters.get("alpha") is not None:
+        raise ValueError(f"alpha: {method!r} takes α from its own laws; leave it out, got {parameters['alpha']!r}")
+    return DirectionalSpectrum(method, **parameters)

@@ -400,10 +400,14 @@ def test_directional_spectrum_is_the_module_function():
     kx, ky = np.meshgrid(np.linspace(-2, 2, 9), np.linspace(-2, 2, 7))
     direct = spectrum_Elfouhaily1997(kx, ky, 12.0, 0.4, fetch=30e3, small_wave_length=0.05)
     np.testing.assert_array_equal(spec(kx, ky), direct)  # the same function with the same arguments
-    # the dispatcher the FFT ocean uses: alpha is ignored, fetch forwarded
-    via = wave_spectrum("Elfouhaily 1997", kx, ky, wind_speed=12.0, wind_direction=0.4, alpha=PHILLIPS_ALPHA,
-                        small_wave_length=0.05, g=GRAVITY, fetch=30e3, seed=3)
+    # the one builder the FFT ocean and the scene files use: fetch forwarded; α or an unknown keyword is an error
+    via = wave_spectrum("Elfouhaily 1997", kx, ky, wind_speed=12.0, wind_direction=0.4,
+                        small_wave_length=0.05, g=GRAVITY, fetch=30e3)
     np.testing.assert_array_equal(via, direct)
+    with pytest.raises(ValueError, match="alpha"):
+        wave_spectrum("Elfouhaily 1997", kx, ky, wind_speed=12.0, alpha=PHILLIPS_ALPHA)
+    with pytest.raises(ValueError, match="seed: not a parameter"):
+        wave_spectrum("Elfouhaily 1997", kx, ky, wind_speed=12.0, seed=3)
 
 
 def test_directional_spectrum_broadcasts_and_is_zero_at_the_origin_and_upwind():
@@ -427,8 +431,9 @@ def test_directional_spectrum_finite_everywhere_without_warnings():
             psi = spec(k * np.cos(theta), k * np.sin(theta))
             assert np.all(np.isfinite(psi)) and np.all(psi >= 0)
             assert spec(0.0, 0.0) == 0.0
-        # a calm sea through the dispatcher (FFTOcean allows U = 0)
-        assert wave_spectrum("Elfouhaily 1997", 0.1, 0.2, wind_speed=0.0, wind_direction=0.0) == 0.0
+    # a calm sea is an error, as in the scene files (wind_speed > 0)
+    with pytest.raises(ValueError, match="wind_speed"):
+        wave_spectrum("Elfouhaily 1997", 0.1, 0.2, wind_speed=0.0, wind_direction=0.0)
     assert np.isnan(DirectionalSpectrum("Elfouhaily 1997")(np.nan, 0.1))
 
 

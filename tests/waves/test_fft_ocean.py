@@ -421,3 +421,36 @@ def test_choppy_waves_have_sharp_crests_and_round_troughs():
     crests = fields.height > np.quantile(fields.height, 0.95)
     troughs = fields.height < np.quantile(fields.height, 0.05)
     assert fields.jacobian[crests].mean() < 1 < fields.jacobian[troughs].mean()
+
+
+def test_a_named_spectrum_uses_the_depth_and_refuses_what_it_cannot_use():
+    """Issue 23 item 4: FFTOcean(spectrum="TMA 1985", depth=d) used to give JONSWAP exactly (the depth was
+    dropped); it is built by the same function as the scene files now."""
+    from oceanrender.waves.wave_spectra import DirectionalSpectrum
+
+    grid = OceanGrid(32, 200.0)
+    tma = FFTOcean(grid, 9.0, 0.3, spectrum="TMA 1985", depth=5.0, dtype=np.float64)
+    jonswap = FFTOcean(grid, 9.0, 0.3, spectrum="JONSWAP 1973", depth=5.0, dtype=np.float64)
+    direct = DirectionalSpectrum("TMA 1985", wind_speed=9.0, wind_direction=0.3, depth=5.0)(grid.kx, grid.ky)
+    np.testing.assert_array_equal(tma.spectrum_values, direct)
+    # The Kitaigorodskii depth function takes variance away in 5 m of water.
+    assert tma.elevation_variance < 0.9 * jonswap.elevation_variance
+    with pytest.raises(ValueError, match="alpha"):
+        FFTOcean(grid, 9.0, 0.3, spectrum="JONSWAP 1973", alpha=0.01).spectrum_values
+
+
+def test_surface_tension_enters_the_dispersion_relation():
+    """ω² = (g k + σ k³/ρ) tanh kd (Lamb 1932): with σ = 0.074 N/m the phase speed has its minimum
+    √(2 √(g σ/ρ)) ≈ 0.231 m/s at λ ≈ 1.70 cm; without, ω = √(g k)."""
+    from oceanrender.waves.wave_spectra import GRAVITY, SEAWATER_DENSITY, SEAWATER_SURFACE_TENSION
+
+    grid = OceanGrid(64, 1.0)  # waves from 1 m down to 3 cm
+    plain = FFTOcean(grid, 5.0, 0.0, dtype=np.float64)
+    capillary = FFTOcean(grid, 5.0, 0.0, surface_tension=SEAWATER_SURFACE_TENSION, dtype=np.float64)
+    k = grid.k
+    np.testing.assert_allclose(plain.omega, np.sqrt(GRAVITY * k), rtol=1e-12)
+    expected = np.sqrt(GRAVITY * k + SEAWATER_SURFACE_TENSION / SEAWATER_DENSITY * k**3)
+    np.testing.assert_allclose(capillary.omega, expected, rtol=1e-12)
+    k_m = np.sqrt(SEAWATER_DENSITY * GRAVITY / SEAWATER_SURFACE_TENSION)
+    c_min = float(np.sqrt(GRAVITY * k_m + SEAWATER_SURFACE_TENSION / SEAWATER_DENSITY * k_m**3) / k_m)
+    assert c_min == pytest.approx(0.231, abs=0.001) and 2 * np.pi / k_m == pytest.approx(0.0170, abs=2e-4)

@@ -301,7 +301,8 @@ def test_directional_variance_equals_frequency_integral(spreading):
      ("JONSWAP 1973", "cos2", 5.0)],
 )
 def test_directional_variance_other_methods_and_finite_depth(method, spreading, depth):
-    spec = DirectionalSpectrum(method, spreading=spreading, depth=depth, **SEA)
+    sea = {k: v for k, v in SEA.items() if not (k == "fetch" and method == "Pierson-Moskowitz 1964")}
+    spec = DirectionalSpectrum(method, spreading=spreading, depth=depth, **sea)
     expected = integrate_omega(spec.wind_sea_frequency_spectrum, spec.peak_frequency) + spec.swell_variance
     assert spec.elevation_variance() == pytest.approx(expected, rel=1e-4)
     if method == "Pierson-Moskowitz 1964":
@@ -341,7 +342,9 @@ def test_directional_zero_wavenumber_and_extremes_are_finite():
     with np.errstate(divide="raise", over="raise", invalid="raise"):
         for method in SPECTRA:
             spreading = None if method in WAVENUMBER_SPECTRA else "Mitsuyasu 1975"  # those carry their own
-            spec = DirectionalSpectrum(method, spreading=spreading, depth=3.0, small_wave_length=0.01, **SEA)
+            sea = {k: v for k, v in SEA.items()
+                   if not (k == "fetch" and method in ("Phillips 2001", "Pierson-Moskowitz 1964"))}
+            spec = DirectionalSpectrum(method, spreading=spreading, depth=3.0, small_wave_length=0.01, **sea)
             psi = spec(k[:, None], np.array([0.0, -1e-9, 2.0]))
             assert spec(0.0, 0.0) == 0.0
             assert np.all(np.isfinite(psi)) and np.all(psi >= 0)
@@ -414,11 +417,16 @@ def test_directional_unknown_names_list_known():
 
 def test_wave_spectrum_builds_directional_spectrum_for_frequency_spectra():
     kx, ky = np.array([0.05, 0.2, -0.1]), np.array([0.01, -0.1, 0.3])
-    # the keywords FFTOcean passes today (alpha is dropped for JONSWAP), plus fetch
-    via = wave_spectrum("JONSWAP 1973", kx, ky, wind_speed=9.0, wind_direction=0.2, alpha=PHILLIPS_ALPHA,
-                        small_wave_length=0.0, g=GRAVITY, fetch=5e4, seed=3)
+    via = wave_spectrum("JONSWAP 1973", kx, ky, wind_speed=9.0, wind_direction=0.2, small_wave_length=0.0,
+                        g=GRAVITY, fetch=5e4)
     direct = DirectionalSpectrum("JONSWAP 1973", wind_speed=9.0, wind_direction=0.2, fetch=5e4)(kx, ky)
     np.testing.assert_array_equal(via, direct)  # the same spectrum built with the same parameters
+    # Every parameter the method cannot use is an error, not dropped (issue 23, item 4).
+    for method, bad, match in (("JONSWAP 1973", {"alpha": PHILLIPS_ALPHA}, "alpha"), ("JONSWAP 1973", {"seed": 3}, "seed"),
+                               ("Pierson-Moskowitz 1964", {"fetch": 5e4}, "fetch"),
+                               ("Phillips 2001", {"gamma": 2.0}, "gamma"), ("Phillips 2001", {"depth": 20.0}, "depth")):
+        with pytest.raises(ValueError, match=match):
+            wave_spectrum(method, kx, ky, wind_speed=9.0, **bad)
     for method in FREQUENCY_SPECTRA:
         assert np.all(wave_spectrum(method, kx, ky, wind_speed=9.0, wind_direction=0.2, depth=20.0) > 0)
     with pytest.raises(ValueError, match="wind_speed"):
