@@ -463,13 +463,18 @@ def cmd_geometry(args: argparse.Namespace) -> int:
     from .waves.sea import SeaSurface  # noqa: PLC0415
     from .export.wave_maps import export_geometry_sequence  # noqa: PLC0415
 
+    from .waves.sea import sea_description  # noqa: PLC0415
+
     sea = SeaSurface(scene.ocean)
     start, end = scene.output.frames
     times = {frame: frame / scene.output.fps for frame in range(start, end)}
     written = 0
+    description = sea_description(scene.ocean, sea.spectrum)
+    print(f"sea ({description['form']}): Hs {description['significant_wave_height_m']:.3g} m, "
+          f"Tp {description['peak_period_s']:.3g} s, mean direction {description['mean_direction_deg']:.1f} deg")
     for index, patch in enumerate(sea.cascades.cascades):
         folder = args.out / f"cascade_{index}"
-        written += len(export_geometry_sequence(folder, patch, times,
+        written += len(export_geometry_sequence(folder, patch, times, sea=description,
                                                 mesh_depth=scene.water.depth if args.ply else None))
         print(f"cascade {index}: patch {patch.grid.patch_size:g} m, {patch.grid.resolution}² -> {folder}")
     if args.camera_mesh:

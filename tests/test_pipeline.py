@@ -313,3 +313,23 @@ def test_zero_adaptation_time_adapts_each_frame_to_itself(variant):
     assert frame.metadata["adaptation_luminance_cd_m2"] == pytest.approx(own, rel=ROUNDOFF32)
     assert frame.metadata["adaptation"] == "this frame's log-average luminance"
     assert frame.seconds["meter"] == 0.0
+
+
+@pytest.mark.parametrize("ocean", [
+    "hs = 1.5\ntp = 6.0\ndirection = 20.0\n[[ocean.partitions]]\nhs = 1.0\ntp = 12.0\ndirection = 110.0\n"
+    "spreading_s = 40.0\n",
+    f"spectrum_file = '{ROOT / 'scenes' / 'sea_states' / 'bimodal.swn'}'\nspectrum_time = '2026-03-14T08:00:00'\n"
+    "spectrum_site = 1\n",
+])
+def test_cli_geometry_export_of_measured_sea_states(tmp_path, capsys, ocean):
+    """Issue 23 item 5: `oceanrender geometry` with the sea-state and the file forms; the sidecar says which."""
+    import json
+
+    scene = tmp_path / "sea.toml"
+    scene.write_text("[ocean]\nresolution = 16\npatch_size = 400.0\ncascades = 1\n" + ocean)
+    assert main(["geometry", str(scene), "--frames", "0:1", "--out", str(tmp_path / "g")]) == 0
+    meta = json.loads((tmp_path / "g" / "cascade_0" / "geometry.json").read_text())
+    sea = meta["parameters"]["ocean"]
+    assert sea["form"] in ("sea state", "file")
+    assert sea["significant_wave_height_m"] > 0.5 and sea["peak_period_s"] > 5.0
+    assert "wrote" in capsys.readouterr().out

@@ -466,6 +466,7 @@ def export_geometry_sequence(
     frame_times: Mapping[int, float],
     *,
     mesh_depth: float | None = None,
+    sea: Mapping[str, object] | None = None,
 ) -> list[Path]:
     """Export the maps (and meshes) of every frame, plus ``geometry.json``: what the CLI calls.
 
@@ -480,6 +481,9 @@ def export_geometry_sequence(
     mesh_depth : float, optional
         Also write ``mesh_NNNN.ply``, the closed water body of
         :mod:`oceanrender.surface.patch_mesh` with its flat bottom at z = −mesh_depth [m].
+    sea : mapping, optional
+        The whole sea this patch belongs to (its form and statistics), written
+        into ``geometry.json`` as ``ocean``.
 
     Returns
     -------
@@ -503,7 +507,8 @@ def export_geometry_sequence(
         raise ValueError(f"mesh_depth must be a positive depth [m], got {mesh_depth!r}")
 
     metadata = ocean_metadata(ocean)
-    written = [write_geometry_json(out_dir, times, metadata, mesh=mesh_depth is not None)]
+    written = [write_geometry_json(out_dir, times, {**metadata, **({"ocean": dict(sea)} if sea else {})},
+                                   mesh=mesh_depth is not None)]
     faces = None if mesh_depth is None else water_body_faces(ocean.grid.resolution)
     for frame, t in sorted(times.items()):
         fields = ocean.fields(t)

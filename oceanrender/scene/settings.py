@@ -1139,6 +1139,7 @@ def resolve_scene_paths(data: dict, folder: Path) -> None:
 def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
     """Read and check the data files a scene names (coastal arrays, object meshes); SceneError naming the key."""
     check_object_inputs(scene, source)
+    check_spectrum_file(scene, source)
     if scene.coastal is None:
         return
     from .arrays import check_coastal_inputs  # noqa: PLC0415
@@ -1159,6 +1160,22 @@ def check_scene_inputs(scene: Scene, source: str = "<dict>") -> None:
                              f"[coastal] offshore side, {depth:.3g} m, within {OPEN_SEA_DEPTH_MATCH:.0%} with waves = "
                              f"'open sea' (one dispersion relation on both sides of the join), got "
                              f"{scene.ocean.wave_depth:g}")
+
+
+def check_spectrum_file(scene: Scene, source: str = "<dict>") -> None:
+    """Read the ``[ocean] spectrum_file`` at its time and site now; SceneError naming the key and the problem."""
+    ocean = scene.ocean
+    if ocean.spectrum_file is None:
+        return
+    from ..io.spectrum_files import read_spectrum_file  # noqa: PLC0415
+
+    try:
+        read_spectrum_file(ocean.spectrum_file, ocean.spectrum_format, ocean.spectrum_time, ocean.spectrum_site)
+    except (ValueError, OSError) as exc:
+        message = str(exc).splitlines()[0]
+        key = next((k for k in ("spectrum_time", "spectrum_site", "spectrum_format") if message.startswith(k)),
+                   "spectrum_file")
+        raise SceneError(f"{source}: [ocean] {key}: {ocean.spectrum_file}: {message}") from None
 
 
 def check_object_inputs(scene: Scene, source: str = "<dict>") -> None:

@@ -67,6 +67,37 @@ def directional_spectrum(ocean: OceanSettings):
     return make_spectrum(ocean.spectrum, **wind)
 
 
+def sea_description(ocean: OceanSettings, spectrum=None) -> dict[str, object]:
+    """The sea's form and statistics for sidecars and logs: Hs [m], Tp [s], mean direction of travel [deg].
+
+    Hs = 4 √m0 and the mean direction from the spectrum over 60 km to 1 mm
+    waves (:func:`~.roughness.elevation_variance` and the energy-weighted
+    circular mean); Tp = 2π/ω_p.
+    """
+    spectrum = directional_spectrum(ocean) if spectrum is None else spectrum
+    m0 = elevation_variance(spectrum, LONGEST_WAVENUMBER, 2.0 * np.pi / SHORTEST_WAVELENGTH)
+    k = np.geomspace(LONGEST_WAVENUMBER, 2.0 * np.pi / SHORTEST_WAVELENGTH, 4000)
+    theta = (np.arange(360) + 0.5) * (2 * np.pi / 360)
+    psi = spectrum(k[:, None] * np.cos(theta), k[:, None] * np.sin(theta)) * k[:, None]
+    weights = np.trapezoid(psi, k, axis=0)
+    mean = math.degrees(math.atan2(float(np.sum(weights * np.sin(theta))), float(np.sum(weights * np.cos(theta)))))
+    described = {"form": ocean.form, "significant_wave_height_m": 4.0 * math.sqrt(m0),
+                 "peak_period_s": 2.0 * math.pi / float(spectrum.peak_frequency), "mean_direction_deg": mean,
+                 "surface_tension_N_m": ocean.surface_tension, "depth_m": ocean.wave_depth}
+    if ocean.form == "file":
+        described.update(spectrum_file=ocean.spectrum_file, spectrum_time=ocean.spectrum_time,
+                         spectrum_site=ocean.spectrum_site)
+    elif ocean.form == "sea state":
+        described.update(partitions=[{"spectrum": ocean.spectrum, "hs_m": ocean.hs, "tp_s": ocean.tp,
+                                      "direction_deg": ocean.wind_direction if ocean.direction is None
+                                      else ocean.direction, "spreading_s": ocean.spreading_s}]
+                         + [{"spectrum": p.spectrum, "hs_m": p.hs, "tp_s": p.tp, "direction_deg": p.direction,
+                             "spreading_s": p.spreading_s} for p in ocean.partitions])
+    else:
+        described.update(spectrum=ocean.spectrum, wind_speed_10m_m_s=ocean.wind_speed, fetch_m=ocean.fetch)
+    return described
+
+
 #: Shortest wave of the spectrum counted in its total slope variance [m] (gravity–capillary waves;
 #: shorter ones are damped by viscosity within a few periods, Phillips 1977 §3.3).
 SHORTEST_WAVELENGTH = 1e-3

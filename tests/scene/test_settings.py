@@ -69,6 +69,23 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[foam]\ntime_step = 0.001\n", "[foam] time_step: Input should be greater than or equal to 0.01"),
         ("[foam]\nwhitewater_dissipation = -1\n", "[foam] whitewater_dissipation: Input should be greater than 0"),
         ("[foam]\ndecay_time = 50.0\nhistory = 10.0\ntime_step = 0.1\n", "foam: history × decay_time / time_step"),
+        # Issue 23: the sea's three forms and their inputs.
+        ("[ocean]\nhs = 2.0\ntp = 8.0\nwind_speed = 9.0\n", "ocean: give the sea in exactly one form, got wind"),
+        ("[ocean]\nhs = 2.0\n", "ocean: the sea-state form needs both hs [m] and tp [s]"),
+        ("[ocean]\nhs = 0\ntp = 8.0\n", "[ocean] hs: Input should be greater than 0"),
+        ("[ocean]\nhs = 2.0\ntp = 0.5\n", "[ocean] tp: Input should be greater than or equal to 1"),
+        ("[ocean]\nhs = 2.0\ntp = 45\n", "[ocean] tp: Input should be less than or equal to 30"),
+        ("[ocean]\nhs = 2.0\ntp = 8.0\nspectrum = 'Phillips 2001'\n", "the sea-state form (hs, tp) takes spectrum"),
+        ("[ocean]\nhs = 2.0\ntp = 8.0\nspreading = 'cos2'\n", "the sea-state form spreads with cos-2s"),
+        ("[ocean]\nhs = 2.0\ntp = 8.0\n[[ocean.partitions]]\nhs = -1\ntp = 12\n",
+         "[ocean.partitions[0]] hs: Input should be greater than 0"),
+        ("[ocean]\nhs = 2.0\ntp = 8.0\n[[ocean.partitions]]\nhs = 1\n", "[ocean.partitions[0]] tp: required key is missing"),
+        ("[ocean]\nspectrum_file = 'none.swn'\n", "[ocean] spectrum_file: "),
+        ("[ocean]\nspectrum_file = 'none.swn'\nhs = 1.0\ntp = 8.0\n", "give the sea in exactly one form"),
+        ("[ocean]\nspectrum_time = '2026-01-01'\n", "spectrum_format, spectrum_time and spectrum_site need spectrum_file"),
+        ("[ocean]\nspectrum = 'Pierson-Moskowitz 1964'\nfetch = 1e4\n", "fetch: 'Pierson-Moskowitz 1964' has no fetch"),
+        ("[ocean]\nsurface_tension = 0.5\n", "[ocean] surface_tension: Input should be less than or equal to 0.1"),
+        ("[ocean]\nmodel = 'Gerstner'\nsurface_tension = 0.07\n", "surface_tension is applied by model 'FFT' only"),
     ],
 )
 def test_errors_are_one_line_with_file_and_key(tmp_path, text, expected):
@@ -332,3 +349,35 @@ def test_object_errors_are_one_line_naming_the_key(tmp_path, entry, extra, expec
 def test_object_paths_are_relative_to_the_scene_file(tmp_path):
     path = _object_scene(tmp_path, 'mesh = "box.ply"\n')
     assert load_scene(path).objects[0].mesh == str(tmp_path / "box.ply")
+
+
+EXAMPLE = SCENES / "sea_states" / "bimodal.swn"
+
+
+@pytest.mark.parametrize(("extra", "key", "expected"), [
+    ("spectrum_time = '2026-03-14T09:00:00'\n", "spectrum_time", "is not in the file (it has 3 times"),
+    ("spectrum_time = 'noon'\n", "spectrum_time", "is not an ISO 8601 time"),
+    ("spectrum_site = 2\n", "spectrum_site", "spectrum_site 2 is not in the file (it has 2 site(s)"),
+    ("spectrum_format = 'json'\n", "spectrum_file", "wavespectra.read_json cannot read it"),
+])
+def test_spectrum_file_errors_name_the_key_before_any_work(tmp_path, extra, key, expected):
+    path = write(tmp_path, f"[ocean]\nspectrum_file = '{EXAMPLE}'\n" + extra)
+    with pytest.raises(SceneError) as info:
+        load_scene(path)
+    message = str(info.value)
+    assert message.startswith(f"{path}: [ocean] {key}: {EXAMPLE}: ") and expected in message and "\n" not in message
+
+
+def test_unreadable_spectrum_file(tmp_path):
+    (tmp_path / "garbage.swn").write_text("not a spectrum\n")
+    with pytest.raises(SceneError, match=r"\[ocean\] spectrum_file: .*garbage.swn: wavespectra.read_swan cannot read"):
+        load_scene(write(tmp_path, "[ocean]\nspectrum_file = 'garbage.swn'\n"))
+
+
+def test_sea_forms_are_read():
+    wind = load_scene(SCENES / "open_ocean.toml").ocean
+    state = load_scene(SCENES / "swell_crossing.toml").ocean
+    measured = load_scene(SCENES / "measured_sea.toml").ocean
+    assert (wind.form, state.form, measured.form) == ("wind", "sea state", "file")
+    assert state.hs == 1.4 and state.partitions[0].tp == 12.5 and state.surface_tension == 0.074
+    assert measured.spectrum_file == str(EXAMPLE.resolve())  # relative to the scene file
