@@ -207,6 +207,8 @@ class OceanSettings(_Section):
         "auto", description="file form: wavespectra reader (auto: from the file name)")
     spectrum_time: str | None = Field(None, description="file form: time of the spectrum, ISO 8601 (default: the first)")
     spectrum_site: int = Field(0, ge=0, description="file form: index of the site in the file [-]")
+    spectrum_tail: float = Field(5.0, ge=0, le=8, description="file form: exponent n of the f⁻ⁿ tail beyond the "
+                                 "file's last frequency (its shorter waves; WAVEWATCH III's 5) [-]; 0 = none")
 
     @field_validator("fractal_size")
     @classmethod
@@ -241,7 +243,7 @@ class OceanSettings(_Section):
                              "law or peak enhancement; leave it out")
         wind = given & {"wind_speed", "fetch", "swell_height", "swell_period", "swell_direction", "swell_spreading_s"}
         state = given & {"hs", "tp", "sigma_a", "sigma_b", "direction", "spreading_s", "partitions"}
-        file = given & {"spectrum_file", "spectrum_format", "spectrum_time", "spectrum_site"}
+        file = given & {"spectrum_file", "spectrum_format", "spectrum_time", "spectrum_site", "spectrum_tail"}
         forms = [name for name, keys in (("wind (wind_speed, fetch)", wind), ("sea state (hs, tp)", state),
                                          ("file (spectrum_file)", file)) if keys]
         if len(forms) > 1:
@@ -258,7 +260,9 @@ class OceanSettings(_Section):
             if self.alpha is not None:
                 raise ValueError("alpha follows from hs and tp in the sea-state form; leave it out")
         if file and self.spectrum_file is None:
-            raise ValueError("spectrum_format, spectrum_time and spectrum_site need spectrum_file")
+            raise ValueError("spectrum_format, spectrum_time, spectrum_site and spectrum_tail need spectrum_file")
+        if 0 < self.spectrum_tail <= 1:
+            raise ValueError("spectrum_tail: 0 (no tail) or > 1 (a finite variance)")
         if file and given & {"spectrum", "spreading", "gamma", "alpha", "wind_direction"}:
             extra = ", ".join(sorted(given & {"spectrum", "spreading", "gamma", "alpha", "wind_direction"}))
             raise ValueError(f"the file form takes the spectrum from spectrum_file; leave out {extra}")

@@ -46,7 +46,7 @@ def directional_spectrum(ocean: OceanSettings):
         table = read_spectrum_file(ocean.spectrum_file, ocean.spectrum_format, ocean.spectrum_time,
                                    ocean.spectrum_site)
         return TabulatedSpectrum(frequency=table.frequency, direction=table.direction, table=table.density,
-                                 **common)
+                                 tail_exponent=ocean.spectrum_tail, **common)
     if ocean.form == "sea state":
         direction = ocean.wind_direction if ocean.direction is None else ocean.direction
         first = Partition(ocean.spectrum, ocean.hs, ocean.tp, ocean.gamma, ocean.sigma_a, ocean.sigma_b,

@@ -247,11 +247,23 @@ class TabulatedSpectrum(FrequencyDirectionSpectrum):
     frequency : ndarray (F,)   f [Hz], increasing.
     direction : ndarray (D,)   θ of travel, counter-clockwise from +x, increasing in [0, 2π) [rad].
     table : ndarray (F, D)     E [m² Hz⁻¹ rad⁻¹].
+    tail_exponent : float      n of the tail E(f_max, θ) (f/f_max)⁻ⁿ beyond the last frequency; 0: none.
+
+    Notes
+    -----
+    Buoys and wave models stop at 0.5–1 Hz (waves of 1.5–6 m), but the sea
+    goes on: without its shorter waves a rendered sea is a mirror (no glitter,
+    no roughness). Beyond the file's last frequency the spectrum continues as
+    a parametric f⁻ⁿ tail with the last frequency's directions, as WAVEWATCH III
+    extends its prognostic range (n = 5, the saturation range of Phillips
+    1958; WAVEWATCH III Development Group 2019, §2.4); ``tail_exponent = 0``
+    keeps exactly the file's band.
     """
 
     frequency: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
     direction: NDArray[np.float64] = field(default_factory=lambda: np.zeros(0))
     table: NDArray[np.float64] = field(default_factory=lambda: np.zeros((0, 0)))
+    tail_exponent: float = 5.0
 
     def __post_init__(self) -> None:
         f, d, E = (np.asarray(a, dtype=np.float64) for a in (self.frequency, self.direction, self.table))
@@ -259,6 +271,8 @@ class TabulatedSpectrum(FrequencyDirectionSpectrum):
             raise ValueError(f"table: shape {E.shape} does not match {len(f)} frequencies x {len(d)} directions")
         if np.any(np.diff(f) <= 0) or np.any(np.diff(d) <= 0) or d[0] < 0 or d[-1] >= 2 * np.pi:
             raise ValueError("frequency and direction must increase; directions in [0, 2π)")
+        if not (self.tail_exponent == 0 or self.tail_exponent > 1):
+            raise ValueError(f"tail_exponent: 0 (no tail) or > 1 (a finite variance), got {self.tail_exponent!r}")
 
     def density(self, f: NDArray, theta: NDArray) -> NDArray[np.float64]:
         f, theta = np.broadcast_arrays(np.asarray(f, dtype=np.float64), np.asarray(theta, dtype=np.float64))
@@ -267,6 +281,7 @@ class TabulatedSpectrum(FrequencyDirectionSpectrum):
         i = np.clip(np.searchsorted(freq, f) - 1, 0, len(freq) - 2)
         wf = np.clip((f - freq[i]) / (freq[i + 1] - freq[i]), 0.0, 1.0)
         inside = (f >= freq[0]) & (f <= freq[-1])
+        tail = f > freq[-1]
         # Direction: linear between neighbours, wrapping from the last to the first across 2π.
         t = np.mod(theta, 2 * np.pi)
         j = np.searchsorted(dirs, t) - 1  # −1: below the first, between the last and the first
@@ -277,14 +292,24 @@ class TabulatedSpectrum(FrequencyDirectionSpectrum):
         wd = np.mod(t - dirs[j0], 2 * np.pi) / span
         low = E[i, j0] * (1 - wd) + E[i, j1] * wd
         high = E[i + 1, j0] * (1 - wd) + E[i + 1, j1] * wd
+        last = E[-1, j0] * (1 - wd) + E[-1, j1] * wd
+        if self.tail_exponent > 0:
+            with np.errstate(divide="ignore", over="ignore"):
+                extended = last * np.where(tail, f / freq[-1], 1.0) ** -self.tail_exponent
+            return np.where(inside, low * (1 - wf) + high * wf, np.where(tail, extended, 0.0))
         return np.where(inside, low * (1 - wf) + high * wf, 0.0)
 
     @property
     def frequency_band(self) -> tuple[float, float]:
-        return float(self.frequency[0]), float(self.frequency[-1])
+        top = float(self.frequency[-1]) * (50.0 if self.tail_exponent > 0 else 1.0)
+        return float(self.frequency[0]), top
 
     def elevation_variance(self) -> float:
-        """m0 of the table: trapezoids in f, the periodic trapezoid rule in θ (exact for the bilinear E) [m²]."""
+        """m0 of the table (trapezoids in f, the periodic trapezoid rule in θ: exact for the bilinear E) plus
+        the tail's S(f_max) f_max/(n − 1) [m²]."""
         dirs = self.direction
         widths = np.mod(np.roll(dirs, -1) - np.roll(dirs, 1), 2 * np.pi) / 2  # each node's share of 2π
-        return float(np.trapezoid(self.table @ widths, self.frequency))
+        m0 = float(np.trapezoid(self.table @ widths, self.frequency))
+        if self.tail_exponent > 0:
+            m0 += float(self.table[-1] @ widths) * float(self.frequency[-1]) / (self.tail_exponent - 1.0)
+        return m0

@@ -82,7 +82,7 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[ocean]\nhs = 2.0\ntp = 8.0\n[[ocean.partitions]]\nhs = 1\n", "[ocean.partitions[0]] tp: required key is missing"),
         ("[ocean]\nspectrum_file = 'none.swn'\n", "[ocean] spectrum_file: "),
         ("[ocean]\nspectrum_file = 'none.swn'\nhs = 1.0\ntp = 8.0\n", "give the sea in exactly one form"),
-        ("[ocean]\nspectrum_time = '2026-01-01'\n", "spectrum_format, spectrum_time and spectrum_site need spectrum_file"),
+        ("[ocean]\nspectrum_time = '2026-01-01'\n", "spectrum_format, spectrum_time, spectrum_site and spectrum_tail need spectrum_file"),
         ("[ocean]\nspectrum = 'Pierson-Moskowitz 1964'\nfetch = 1e4\n", "fetch: 'Pierson-Moskowitz 1964' has no fetch"),
         ("[ocean]\nsurface_tension = 0.5\n", "[ocean] surface_tension: Input should be less than or equal to 0.1"),
         ("[ocean]\nmodel = 'Gerstner'\nsurface_tension = 0.07\n", "surface_tension is applied by model 'FFT' only"),

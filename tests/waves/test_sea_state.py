@@ -166,7 +166,7 @@ def test_tabulated_interpolation_wraps_in_direction_and_is_zero_outside_the_band
     f = np.array([0.1, 0.2, 0.3])
     d = np.radians([10.0, 100.0, 190.0, 280.0])
     E = np.arange(12.0).reshape(3, 4) + 1
-    sea = TabulatedSpectrum(frequency=f, direction=d, table=E)
+    sea = TabulatedSpectrum(frequency=f, direction=d, table=E, tail_exponent=0.0)
     np.testing.assert_allclose(sea.density(np.array([0.2]), np.array([d[2]])), [E[1, 2]], rtol=QUADRATURE)
     # Half-way from 280° to 370° (= 10°): across 2π.
     np.testing.assert_allclose(sea.density(np.array([0.1]), np.radians([325.0])), [(E[0, 3] + E[0, 0]) / 2],
@@ -175,3 +175,22 @@ def test_tabulated_interpolation_wraps_in_direction_and_is_zero_outside_the_band
     # m0 of the bilinear table: trapezoids in f, each direction's share of 2π (90° here).
     assert sea.elevation_variance() == pytest.approx(float(np.trapezoid(E.sum(axis=1) * np.pi / 2, f)),
                                                      rel=QUADRATURE)
+
+
+def test_the_file_spectrum_continues_as_an_f_minus_n_tail():
+    """Beyond the file's last frequency: E(f_max, θ) (f/f_max)⁻⁵ (WAVEWATCH III's tail), its variance
+    S(f_max) f_max/4 added to m0; tail_exponent = 0 keeps the file's band only."""
+    f = np.array([0.1, 0.2, 0.3])
+    d = np.radians([10.0, 100.0, 190.0, 280.0])
+    E = np.arange(12.0).reshape(3, 4) + 1
+    sea = TabulatedSpectrum(frequency=f, direction=d, table=E)
+    np.testing.assert_allclose(sea.density(np.array([0.6]), np.array([d[1]])), [E[2, 1] * 2.0**-5], rtol=QUADRATURE)
+    band = TabulatedSpectrum(frequency=f, direction=d, table=E, tail_exponent=0.0)
+    S_max = E[2].sum() * np.pi / 2
+    assert sea.elevation_variance() == pytest.approx(band.elevation_variance() + S_max * 0.3 / 4, rel=QUADRATURE)
+    # The tail's analytic variance against quadrature of the density out to 1000 f_max.
+    ft = np.geomspace(0.3, 300.0, 20001)
+    numeric = np.trapezoid(sea.frequency_spectrum_hz(ft, directions=4 * 90), ft)
+    assert numeric == pytest.approx(S_max * 0.3 / 4, rel=1e-4)
+    with pytest.raises(ValueError, match="tail_exponent"):
+        TabulatedSpectrum(frequency=f, direction=d, table=E, tail_exponent=0.5)
