@@ -14,7 +14,7 @@ warn() { echo "drift: WARNING: $*"; }
 
 rm -rf "$VENV"
 "$PY" -m venv "$VENV"
-if ! timeout 1200 "$VENV/bin/python" -m pip install --upgrade --upgrade-strategy eager -e ".[test]" >"$LOG/install.log" 2>&1; then
+if ! timeout 1200 "$VENV/bin/python" -m pip install --upgrade --upgrade-strategy eager -e ".[test,spectra]" >"$LOG/install.log" 2>&1; then
   warn "could not install the newest allowed versions (registry unreachable or no solution; see $LOG/install.log)"
   exit 0
 fi
