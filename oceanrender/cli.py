@@ -879,13 +879,17 @@ def cmd_validate_shader(args: argparse.Namespace) -> int:
     try:
         runner = ShaderRunner(context, source, str(fragment), references.luts, args.ripples)
     except ShaderError as exc:
+        context.release()
         for message in exc.messages:
             print(message, file=sys.stderr)
         print(f"oceanrender: error: {fragment}: {len(exc.messages)} GLSL error(s)", file=sys.stderr)
         return 2
     print(f"oceanrender {__version__}: {fragment} on {context.renderer}; reference set {args.reference} "
           f"({len(references.views)} frame(s))", flush=True)
-    grade = validate_shader(runner, references, args.gamma, progress=lambda text: print(text, flush=True))
+    try:
+        grade = validate_shader(runner, references, args.gamma, progress=lambda text: print(text, flush=True))
+    finally:
+        runner.release()
     out.mkdir(parents=True, exist_ok=True)
     meta = {"shader": str(fragment), "reference_set": str(args.reference), "gamma": grade.gamma,
             "ripple_strength": args.ripples}

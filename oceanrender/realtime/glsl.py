@@ -144,7 +144,8 @@ class GLContext:
         except self._gl.Error as exc:
             raise ShaderError(compile_messages(str(exc), source_name)) from None
 
-    def _texture(self, texture: Texture):
+    def upload(self, texture: Texture):
+        """A GL texture of ``texture`` (its levels, filter and wrapping), to pass to :meth:`render` many times."""
         gl = self._gl
         data = np.ascontiguousarray(texture.data, dtype=np.float32)
         rows, columns, channels = data.shape
@@ -159,20 +160,22 @@ class GLContext:
         tex.repeat_x, tex.repeat_y = texture.repeat
         return tex
 
-    def render(self, program, size: tuple[int, int], textures: dict[str, Texture], uniforms: dict
-               ) -> NDArray[np.float32]:
+    def render(self, program, size: tuple[int, int], textures: dict, uniforms: dict) -> NDArray[np.float32]:
         """Draw the full-screen triangle with ``program`` into a (height, width) RGBA32F target → (H, W, 4).
 
+        ``textures``: :class:`Texture` s (uploaded for this draw and released
+        after it) or GL textures from :meth:`upload` (bound as they are).
         Textures and uniforms the program does not declare are skipped.
         """
         width, height = size
         bound = []
         try:
             for unit, (name, texture) in enumerate((n, t) for n, t in textures.items() if n in program):
-                tex = self._texture(texture)
-                tex.use(location=unit)
+                if isinstance(texture, Texture):
+                    texture = self.upload(texture)
+                    bound.append(texture)
+                texture.use(location=unit)
                 program[name].value = unit
-                bound.append(tex)
             for name, value in uniforms.items():
                 if name in program:
                     program[name].value = value

@@ -161,14 +161,28 @@ class ShaderRunner:
         self.program = context.program(source, source_name)
         self.luts = luts
         self.pyramids = lut_pyramids(luts)
-        self.textures = lut_textures(luts, self.pyramids)
+        # Uploaded once: the γ fit draws every view some 35 times with the same textures.
+        self.textures = {name: context.upload(t) for name, t in lut_textures(luts, self.pyramids).items()}
+        self._views: dict[ReferenceView, dict] = {}
         self.strength = float(strength)
         self.glint = glint
+
+    def _gbuffer(self, view: ReferenceView) -> dict:
+        """The view's G-buffer textures, uploaded on its first draw."""
+        if view not in self._views:
+            self._views[view] = {name: self.context.upload(t) for name, t in gbuffer_textures(view.gbuffer).items()}
+        return self._views[view]
+
+    def release(self) -> None:
+        """Free the uploaded textures (the context stays)."""
+        for texture in [*self.textures.values(), *(t for v in self._views.values() for t in v.values())]:
+            texture.release()
+        self.textures, self._views = {}, {}
 
     def image(self, view: ReferenceView, gamma: float) -> NDArray[np.float64]:
         """The shader's output rgb (H, W, 3) for a view, float64."""
         height, width = view.gbuffer.shape
-        textures = {**self.textures, **gbuffer_textures(view.gbuffer)}
+        textures = {**self.textures, **self._gbuffer(view)}
         uniforms = shader_uniforms(self.luts, self.pyramids, view.pixel_angle, gamma, self.strength, self.glint)
         return self.context.render(self.program, (width, height), textures, uniforms)[..., :3].astype(np.float64)
 

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -198,9 +199,9 @@ class FrequencyDirectionSpectrum:
         """Hs = 4 √m0 [m]."""
         return 4.0 * math.sqrt(self.elevation_variance())
 
-    @property
+    @cached_property
     def peak_frequency(self) -> float:
-        """Angular frequency ω_p of the peak of S(f) [rad s⁻¹] (the largest, for several peaks)."""
+        """Angular frequency ω_p of the peak of S(f) [rad s⁻¹] (the largest, for several peaks; computed once)."""
         f = np.geomspace(*self.frequency_band, 8192)
         return float(2 * np.pi * f[int(np.argmax(self.frequency_spectrum_hz(f)))])
 
