@@ -29,6 +29,8 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from .scene import Scene, SceneError
 
 GiB = float(1 << 30)
@@ -121,6 +123,103 @@ def check_memory(scene: Scene, source: str, renders: bool = True, available: flo
         raise SceneError(f"{source}: {largest.key}: the run needs about {total / GiB:.1f} GiB ({largest.what}: "
                          f"{largest.bytes / GiB:.1f} GiB), more than the {budget / GiB:.1f} GiB it may use here; "
                          f"expected a smaller value")
+
+
+#: Seconds per sample of the camera's pass on one core (split integrator, first lobe; default scene), measured
+#: by ``benchmarks/bench_time_estimate.py`` (BENCHMARKS.md, "Time estimate") [s].
+SECONDS_PER_SAMPLE_CORE = 2.2e-6
+#: Seconds per sample and expected in-water vertex of the in-water lobe on one core, measured likewise [s].
+SECONDS_PER_WATER_VERTEX_CORE = 2.9e-6
+#: The GPU's throughput against the 2-core CPU's on the same scene (57.5 against 0.69 M samples/s, H200,
+#: ../shared/NOTES.md) [-].
+GPU_SPEED_UP_OVER_TWO_CORES = 83.0
+#: Seconds per FFT grid point and cascade of one frame's geometry (fields, level pyramids, foam history), measured [s].
+SECONDS_PER_FFT_POINT = 1.7e-7
+#: A run's fixed set-up: Mitsuba's scene load, kernel compilation, the adapting white [s], measured (CPU; GPU).
+SETUP_SECONDS = {"cpu": 12.0, "gpu": 40.0}
+
+
+@dataclass(frozen=True)
+class TimeEstimate:
+    """A run's expected wall time [s], from the scene's sizes and the measured per-unit costs.
+
+    Attributes
+    ----------
+    setup : float        Scene load, compilation, white and the first frame's adaptation window [s].
+    per_frame : float    Each further frame: geometry, its meter, its samples [s].
+    total : float        ``setup + frames × per_frame`` [s].
+    key : str            The scene key that dominates the time.
+    """
+
+    setup: float
+    per_frame: float
+    total: float
+    key: str
+
+    def line(self) -> str:
+        """``about 3 min 20 s (set-up 14 s, then 62 s per frame)``, for the run's first line."""
+        return f"about {_duration(self.total)} (set-up {_duration(self.setup)}, then {_duration(self.per_frame)} per frame)"
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 2 * 86400:
+        return f"{seconds / 3600:.1f} h"
+    return f"{seconds / 86400:.0f} days"
+
+
+def expected_water_vertices(scene: Scene) -> float:
+    """Expected scattering vertices of a path in the water before it is absorbed [-], at 550 nm.
+
+    1 / (1 − ω₀) with ω₀ = b/c the single-scattering albedo (the mean number of
+    collisions of a photon in an infinite medium: a geometric series of survivals,
+    e.g. Mobley 1994, "Light and Water", §5.8), capped by ``[render] max_depth``.
+    """
+    from .optics.scene_water import water_optics  # noqa: PLC0415
+
+    optics = water_optics(scene)
+    iops = getattr(optics, "iops", optics)
+    albedo = float(np.interp(550.0, iops.wavelengths, iops.scattering / (iops.absorption + iops.scattering)))
+    return float(min(1.0 / max(1.0 - albedo, 1e-9), scene.render.max_depth))
+
+
+def time_estimate(scene: Scene, variant: str, meter_spp: int, cores: int | None = None) -> TimeEstimate:
+    """The run's wall time [s], before any work, from measured per-unit costs (the time's :func:`memory_estimate`).
+
+    Per frame: the FFT sea's geometry, the adaptation meter (``meter_spp`` samples, one
+    frame per frame; the first frame meters its whole window), and the samples: the
+    camera's pass at ``spp`` and the in-water lobe at ``in_water_fraction`` × spp, each
+    sample costing in proportion to its expected vertices in the water
+    (:func:`expected_water_vertices`). CPU costs scale with ``cores``; a ``cuda`` variant
+    runs the samples :data:`GPU_SPEED_UP_OVER_TWO_CORES` times faster than two cores.
+    A coastal scene's simulation is not included. An estimate within about 2× (BENCHMARKS.md).
+    """
+    from .vision.temporal import adaptation_window  # noqa: PLC0415
+
+    cores = cores or len(os.sched_getaffinity(0))
+    gpu = variant.startswith("cuda")
+    per_sample = (SECONDS_PER_SAMPLE_CORE + SECONDS_PER_WATER_VERTEX_CORE * scene.render.in_water_fraction
+                  * expected_water_vertices(scene))
+    per_sample /= GPU_SPEED_UP_OVER_TWO_CORES * 2 if gpu else cores
+    width, height = scene.output.resolution
+    pixels = width * height
+    render = pixels * scene.output.spp * per_sample
+    geometry = 0.0
+    if scene.ocean.model == "FFT":
+        geometry = SECONDS_PER_FFT_POINT * scene.ocean.resolution ** 2 * scene.ocean.cascades * 2.0 / min(cores, 2)
+    vision = scene.vision
+    follows = vision.adaptation_luminance == "frame" and vision.adaptation_time > 0
+    meter = (geometry + pixels * meter_spp * per_sample) if follows else 0.0
+    start, end = scene.output.frames
+    window = len(adaptation_window(start, vision.adaptation_time, scene.output.fps)) if follows else 0
+    setup = SETUP_SECONDS["gpu" if gpu else "cpu"] + max(window - 1, 0) * meter
+    per_frame = geometry + meter + render
+    key = "[output] spp" if render >= max(geometry, meter) else (
+        "[ocean] resolution" if geometry >= meter else "[vision] adaptation_luminance")
+    return TimeEstimate(setup, per_frame, setup + (end - start) * per_frame, key)
 
 
 def check_tables(scene: Scene, source: str) -> None:

@@ -16,7 +16,9 @@ from pathlib import Path
 from typing import Iterator
 
 from . import __version__
+from .io.messages import quoted
 from .scene import Scene, SceneError, load_scene, with_overrides, with_view
+from .surface.frame import FrameError
 
 
 class UserError(Exception):
@@ -27,7 +29,7 @@ def _frame_range(text: str) -> tuple[int, int]:
     try:
         start, end = (int(part) for part in text.split(":"))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected START:END (e.g. 0:3), got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected START:END (e.g. 0:3), got {quoted(text)}") from None
     return start, end
 
 
@@ -35,9 +37,9 @@ def _point(text: str) -> tuple[float, float]:
     try:
         x, y = (float(part) for part in text.split(","))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected X,Y in metres (e.g. 10.5,-3), got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected X,Y in metres (e.g. 10.5,-3), got {quoted(text)}") from None
     if not (math.isfinite(x) and math.isfinite(y)):
-        raise argparse.ArgumentTypeError(f"expected finite X,Y in metres, got {text!r}")
+        raise argparse.ArgumentTypeError(f"expected finite X,Y in metres, got {quoted(text)}")
     return x, y
 
 
@@ -45,7 +47,7 @@ def _resolution(text: str) -> tuple[int, int]:
     try:
         width, height = (int(part) for part in text.lower().split("x"))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT (e.g. 320x180), got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT (e.g. 320x180), got {quoted(text)}") from None
     return width, height
 
 
@@ -251,14 +253,16 @@ def scene_folder(scene: Scene, source: str) -> Path:
     """``<[output] directory>/<scene name>``, refused if it resolves outside the directory (a link)."""
     from .io.paths import PathProblem, check_inside  # noqa: PLC0415
 
-    root = Path(scene.output.directory)
+    from .io.paths import absolute  # noqa: PLC0415
+
+    root = scene.output.directory
     try:
-        check_inside(root / scene.name, root)
+        # NOTE: taken literally ('~' and '$HOME' are folder names here): the one resolved folder every writer gets.
+        return check_inside(absolute(root) / scene.name, root)
     except PathProblem as exc:
         raise UserError(f"{source}: name: {exc}; expected a folder inside the output directory") from None
     except OSError as exc:
         raise UserError(f"{source}: [output] directory: {root}: {exc.strerror or exc}") from None
-    return root / scene.name
 
 
 def activate(requested: str):
@@ -280,7 +284,7 @@ def parse_cluster_address(text: str) -> tuple[str, str, int]:
     """(scheme, host, port) of a scheduler address ``tcp://HOST:PORT`` / ``tls://HOST:PORT``; UserError if malformed."""
     from urllib.parse import urlsplit  # noqa: PLC0415
 
-    expected = f"expected a Dask scheduler address like tcp://HOST:8786 ({' or '.join(CLUSTER_SCHEMES)}), got {text!r}"
+    expected = f"expected a Dask scheduler address like tcp://HOST:8786 ({' or '.join(CLUSTER_SCHEMES)}), got {quoted(text)}"
     try:
         parts = urlsplit(text)
         port = parts.port
@@ -374,9 +378,14 @@ def _render(args: argparse.Namespace, scene: Scene, client) -> int:
     width, height = scene.output.resolution
     where = "" if client is None else (f", {len(client.scheduler_info()['workers'])} Dask worker(s)"
                                        + (f" at {args.cluster}" if args.cluster else ""))
+    from .checks import time_estimate  # noqa: PLC0415
+    from .pipeline import METER_SPP  # noqa: PLC0415
+
+    estimate = time_estimate(scene, runtime.variant, METER_SPP)
     print(f"oceanrender {__version__}: {scene.name}, frames {start}:{end}, {width}x{height}, "
           f"{scene.output.spp} spp, variant {runtime.variant}"
-          + (f" (LLVM {runtime.llvm_library})" if runtime.llvm_library else "") + f"{where} -> {out_dir}", flush=True)
+          + (f" (LLVM {runtime.llvm_library})" if runtime.llvm_library else "") + f"{where} -> {out_dir}; "
+          f"estimated {estimate.line()}" + ("" if client is None else " for one process"), flush=True)
 
     from tqdm import tqdm  # noqa: PLC0415
 
@@ -492,7 +501,7 @@ def _check_usd_options(scene: Scene, args: argparse.Namespace):
     from .export.usd_stage import USD_SUFFIXES, sea_grid  # noqa: PLC0415
 
     if args.usd.suffix.lower() not in USD_SUFFIXES:
-        raise UserError(f"--usd: expected a file ending in {', '.join(USD_SUFFIXES)}, got {str(args.usd)!r}")
+        raise UserError(f"--usd: expected a file ending in {', '.join(USD_SUFFIXES)}, got {quoted(str(args.usd))}")
     if args.usd.is_dir():
         raise UserError(f"--usd: {args.usd} is a folder; expected a file name")
     if scene.coastal is not None:
@@ -679,9 +688,9 @@ def _albedo_pair(text: str) -> tuple[float, float]:
     try:
         r400, r700 = (float(part) for part in text.split(","))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected R400,R700 (e.g. 0.25,0.45), got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected R400,R700 (e.g. 0.25,0.45), got {quoted(text)}") from None
     if not (0 <= r400 <= 1 and 0 <= r700 <= 1):
-        raise argparse.ArgumentTypeError(f"albedos must lie in [0, 1], got {text!r}")
+        raise argparse.ArgumentTypeError(f"albedos must lie in [0, 1], got {quoted(text)}")
     return r400, r700
 
 
@@ -924,6 +933,10 @@ def main(argv: list[str] | None = None) -> int:
     except (SceneError, UserError) as exc:
         print(f"oceanrender: error: {one_line(exc)}", file=sys.stderr)
         return 2
+    except FrameError as exc:  # a frame the scene cannot make right (non-finite): the frames before it are kept
+        print(f"oceanrender: error: {one_line(args.scene if hasattr(args, 'scene') else '')}: {one_line(exc)}; "
+              f"finished frames are kept", file=sys.stderr)
+        return 1
     except OSError as exc:  # a file system failing mid-run (disk full, folder removed): finished work is kept
         from .io.paths import is_disk_full  # noqa: PLC0415
 

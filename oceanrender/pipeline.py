@@ -21,7 +21,7 @@ from .optics.scene_water import water_optics
 from .render.renderer import WaterRenderer, adapting_white_XYZ
 from .scene import Scene
 from .surface.bodies import scene_water_body, sun_lobe_alpha, surface_roughness
-from .surface.frame import FrameGeometry
+from .surface.frame import FIELD_KEYS, FrameError, FrameGeometry
 from .vision.brightness import adaptation_luminance_log_average
 from .vision.display import encode_sRGB_8bit
 from .vision.model import VisionModel
@@ -29,6 +29,29 @@ from .vision.temporal import adaptation_window, adapted_luminance
 
 #: Stages timed per frame, in order.
 STAGES = ("meter", "geometry", "update", "render", "denoise", "vision", "write")
+#: Largest share of a frame's pixels that may come out of the renderer non-finite and be repaired from their
+#: neighbours [-]: Mitsuba's volpath gives NaN in a handful of pixels now and then (../shared/NOTES.md); more
+#: than this is a broken frame, not noise, and is not written.
+REPAIR_SHARE = 1e-3
+
+
+def check_geometry(geometry: FrameGeometry, frame: int, t: float) -> FrameGeometry:
+    """``geometry`` if every field is finite; else :class:`FrameError` naming the field and the keys behind it."""
+    bad = geometry.non_finite()
+    if bad:
+        name, count = next(iter(bad.items()))
+        raise FrameError(f"frame {frame} (t = {t:g} s): stage geometry: {count} non-finite value(s) in the water's "
+                         f"{name}, from {FIELD_KEYS[name]}; nothing of this frame is written")
+    return geometry
+
+
+def check_repaired(repaired: int, pixels: int, frame: int) -> None:
+    """:class:`FrameError` when more than :data:`REPAIR_SHARE` of a frame's ``pixels`` were non-finite."""
+    if repaired > REPAIR_SHARE * pixels:
+        raise FrameError(f"frame {frame}: stage render: {repaired} of {pixels} pixels came out non-finite "
+                         f"({repaired / pixels:.2%}, more than the {REPAIR_SHARE:.1%} repaired from their "
+                         f"neighbours); the frame is not written: check the scene's [water], [composition] and "
+                         f"[render] settings")
 
 
 @dataclass(frozen=True)
@@ -252,8 +275,9 @@ class Sequence:
         return frame / self.scene.output.fps
 
     def geometry(self, frame: int) -> FrameGeometry:
-        """The water body of a frame: vertex positions [m], normals, foam."""
-        return self.body.frame(self.time_of(frame))
+        """The water body of a frame: vertex positions [m], normals, foam; :class:`FrameError` if not finite."""
+        t = self.time_of(frame)
+        return check_geometry(self.body.frame(t), frame, t)
 
     def metadata(self, frame: int, repaired: int, adaptation: float,
                  adaptation_target: float | None = None) -> dict[str, object]:
@@ -363,6 +387,7 @@ class Sequence:
         tic = time.perf_counter()
         own["update"] += tic - tac
         xyz, repaired = self.renderer.render_xyz(self.spp, seed=self.scene.render.seed + frame)
+        check_repaired(repaired, xyz.shape[0] * xyz.shape[1], frame)
         tac = time.perf_counter()
         own["render"] += tac - tic
         if self.scene.render.denoise:

@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 
 from oceanrender import checks
-from oceanrender.scene import SceneError, scene_from_dict, with_overrides
+from oceanrender.scene import SceneError, with_overrides
+from tests.scenes import scene_from_dict
 from oceanrender.waves.sea import elevation_std
 
 OCEAN = {"spectrum": "Pierson-Moskowitz 1964", "wind_speed": 10.0, "resolution": 64}
@@ -97,3 +98,26 @@ def test_an_object_reflectance_outside_0_1_is_refused_before_any_work(tmp_path):
     s = scene(objects=[{"name": "b", "mesh": str(tmp_path / "box.ply"), "albedo_spectrum": str(tmp_path / "paint.csv")}])
     with pytest.raises(SceneError, match=r"\[\[objects\]\] b albedo_spectrum: .*reflectance must lie in \[0, 1\]"):
         checks.check_tables(s, "s.toml")
+
+
+def test_the_time_estimate_grows_with_the_work_and_names_what_dominates():
+    """Estimates from the measured unit costs (checks.SECONDS_PER_*): linear in samples, frames and cores."""
+    base = scene(output={"resolution": [320, 180], "spp": 16, "frames": [0, 2]})
+    one = checks.time_estimate(base, "llvm_ad_spectral", meter_spp=2, cores=2)
+    more = checks.time_estimate(with_overrides(base, output={"spp": 1 << 20}), "llvm_ad_spectral", 2, cores=2)
+    assert one.total == pytest.approx(one.setup + 2 * one.per_frame)
+    assert more.per_frame > 1e4 * one.per_frame / 2 and more.key == "[output] spp"
+    assert "h" in more.line() or "days" in more.line()
+    wide = checks.time_estimate(base, "llvm_ad_spectral", 2, cores=4)
+    assert wide.per_frame < one.per_frame
+    gpu = checks.time_estimate(base, "cuda_ad_spectral", 2)
+    assert gpu.per_frame < one.per_frame / 10
+
+
+def test_turbid_water_is_estimated_slower_than_clear():
+    """More scattering before absorption means more in-water vertices per path (1/(1 − ω₀), capped by max_depth)."""
+    clear = scene()
+    turbid = scene(composition={"preset": "turbid brown estuary"}, render={"max_depth": 64})
+    assert checks.expected_water_vertices(clear) == pytest.approx(1.0, abs=0.1)
+    assert checks.expected_water_vertices(turbid) > 5
+    assert checks.expected_water_vertices(scene(composition={"preset": "turbid brown estuary"}, render={"max_depth": 3})) == 3

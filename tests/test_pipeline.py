@@ -14,7 +14,8 @@ from oceanrender.cli import main
 from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import Sequence, frame_paths, render_sequence
 from oceanrender.render.renderer import WaterRenderer
-from oceanrender.scene import scene_from_dict
+from oceanrender.surface.frame import FrameGeometry
+from tests.scenes import scene_from_dict, small_sea_text
 from tests.tolerances import ROUNDOFF32
 
 pytestmark = pytest.mark.render
@@ -37,11 +38,11 @@ def tiny_scene(**sections):
 
 def tiny_toml(tmp_path, frames=(0, 2), resolution=(24, 16), spp=4):
     path = tmp_path / "tiny.toml"
-    path.write_text(
+    path.write_text(small_sea_text(
         f"[output]\nframes = [{frames[0]}, {frames[1]}]\nresolution = [{resolution[0]}, {resolution[1]}]\nspp = {spp}\n"
         f"directory = '{tmp_path / 'out'}'\n"
         "[ocean]\nresolution = 16\npatch_size = 40.0\n[render]\nwhite_spp = 64\nmax_depth = 6\n"
-    )
+    ))
     return path
 
 
@@ -333,3 +334,28 @@ def test_cli_geometry_export_of_measured_sea_states(tmp_path, capsys, ocean):
     assert sea["form"] in ("sea state", "file")
     assert sea["significant_wave_height_m"] > 0.5 and sea["peak_period_s"] > 5.0
     assert "wrote" in capsys.readouterr().out
+
+
+def test_a_non_finite_field_of_the_sea_stops_the_frame_naming_stage_and_keys():
+    """Issue 39: a NaN in the foam was 'repaired' into a black sea; now the frame is refused in one line."""
+    from oceanrender.pipeline import check_geometry
+    from oceanrender.surface.frame import FrameError
+
+    positions = np.zeros((4, 3), np.float32)
+    normals = np.tile(np.float32([0, 0, 1]), (4, 1))
+    good = FrameGeometry(positions, normals, np.zeros(4, np.float32))
+    assert check_geometry(good, 3, 0.125) is good
+    foam = np.float32([0.0, np.nan, 0.2, np.inf])
+    with pytest.raises(FrameError, match=r"frame 3 \(t = 0.125 s\): stage geometry: 2 non-finite value\(s\) in the "
+                                         r"water's foam, from the foam model: \[foam\]"):
+        check_geometry(FrameGeometry(positions, normals, foam), 3, 0.125)
+
+
+def test_more_repaired_pixels_than_a_small_share_fail_the_frame():
+    from oceanrender.pipeline import REPAIR_SHARE, check_repaired
+    from oceanrender.surface.frame import FrameError
+
+    pixels = 1280 * 720
+    check_repaired(int(REPAIR_SHARE * pixels), pixels, 0)  # a handful of NaN pixels: repaired, as before
+    with pytest.raises(FrameError, match=r"frame 7: stage render: 922 of 921600 pixels came out non-finite"):
+        check_repaired(int(REPAIR_SHARE * pixels) + 1, pixels, 7)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from oceanrender.render.scene import sun_direction
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.scene.motion import camera_motion
 from oceanrender.surface.open_sea import WaterBody
 from tests.tolerances import ROUNDOFF

@@ -28,8 +28,12 @@ FRAME_CHANNELS = ("X", "Y", "Z", "R", "G", "B")
 
 @contextmanager
 def atomic_path(path: str | Path, suffix: str) -> Iterator[Path]:
-    """Yield a temporary path next to ``path``; rename it onto ``path`` on success."""
-    path = Path(path)
+    """Yield a temporary path next to ``path``; rename it onto ``path`` on success.
+
+    Both are absolute (``os.path.abspath``: no ``~`` or ``$VAR`` expansion), so a
+    writer that interprets names cannot put the file anywhere else.
+    """
+    path = Path(os.path.abspath(os.fspath(path)))
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp_path = path.parent / temporary_name(path.stem, suffix)
     os.close(os.open(tmp_path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
@@ -78,8 +82,10 @@ def write_png(path: str | Path, rgb8: np.ndarray) -> None:
     """Write an (H, W, 3) uint8 image as PNG, atomically."""
     if rgb8.dtype != np.uint8:
         raise TypeError(f"PNG frames are 8-bit: expected uint8, got {rgb8.dtype}")
-    with atomic_path(path, ".png") as tmp:
-        iio.imwrite(tmp, rgb8, extension=".png")
+    # NOTE: imageio expands a leading '~' of a path it is given (its Request): it writes into the handle of the
+    # exact file made here instead, so no library reinterprets the name.
+    with atomic_path(path, ".png") as tmp, open(tmp, "wb") as handle:
+        iio.imwrite(handle, rgb8, extension=".png")
 
 
 def frame_is_complete(exr_path: str | Path, png_path: str | Path, size: tuple[int, int],
@@ -98,7 +104,8 @@ def frame_is_complete(exr_path: str | Path, png_path: str | Path, size: tuple[in
         return False
     try:
         channels, _ = read_exr(exr_path)
-        image = iio.imread(png_path, plugin="pillow")
+        with open(png_path, "rb") as handle:  # a handle, not a name imageio would expand ('~')
+            image = iio.imread(handle, plugin="pillow", extension=".png")
     except Exception:  # noqa: BLE001 (any unreadable file means: render again)
         return False
     needed = (*FRAME_CHANNELS, *extra_channels)

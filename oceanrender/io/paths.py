@@ -39,7 +39,8 @@ class PathProblem(ValueError):
     """A path that cannot be used; the message is one line without the key (the caller adds it)."""
 
 
-def _name_problem(path: str) -> str | None:
+def name_problem(path: str) -> str | None:
+    """Why ``path`` cannot name a file on this system (a NUL byte, longer than PATH_MAX or NAME_MAX), or None."""
     if "\x00" in path:
         return "the path holds a NUL byte"
     if len(os.fsencode(path)) > PATH_MAX:
@@ -56,7 +57,7 @@ def check_input_file(path: str | Path, max_bytes: int) -> Path:
     Symbolic links are followed; what they point to must be a regular file.
     """
     text = os.fspath(path)
-    problem = _name_problem(text)
+    problem = name_problem(text)
     if problem:
         raise PathProblem(problem)
     try:
@@ -89,7 +90,7 @@ def check_output_folder(folder: str | Path, needed_bytes: int = 0) -> Path:
         that cannot be created or written, or too little free space.
     """
     text = os.fspath(folder)
-    problem = _name_problem(text)
+    problem = name_problem(text)
     if problem:
         raise PathProblem(problem)
     folder = Path(text)
@@ -111,9 +112,26 @@ def check_output_folder(folder: str | Path, needed_bytes: int = 0) -> Path:
     return folder
 
 
+def absolute(path: str | Path) -> Path:
+    """``path`` made absolute against the working folder, literally: no ``~``, ``$VAR`` or glob expansion.
+
+    The one form of an output path handed to every writer, so that no library
+    (imageio expands a leading ``~``) can send a file elsewhere.
+    """
+    return Path(os.path.abspath(os.fspath(path)))
+
+
 def check_inside(path: str | Path, root: str | Path) -> Path:
-    """``path`` resolved, if it lies inside ``root`` (resolved); else :class:`PathProblem`."""
-    resolved, base = Path(path).resolve(), Path(root).resolve()
+    """``path`` resolved, if it lies inside ``root`` (resolved); else :class:`PathProblem`.
+
+    Both are taken literally (:func:`absolute`); a name the file system cannot
+    hold (a NUL byte, over-long) is a :class:`PathProblem` too.
+    """
+    for text in (os.fspath(path), os.fspath(root)):
+        problem = name_problem(text)
+        if problem:
+            raise PathProblem(problem)
+    resolved, base = absolute(path).resolve(), absolute(root).resolve()
     if resolved != base and base not in resolved.parents:
         raise PathProblem(f"{path} resolves to {resolved}, outside {base}")
     return resolved

@@ -30,6 +30,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
+from .messages import quoted
+
 __all__ = ["FileSpectrum", "read_spectrum_file", "READERS", "reader_for"]
 
 #: ``[ocean] spectrum_format`` → wavespectra reader.
@@ -73,7 +75,7 @@ def reader_for(path: str | Path, spectrum_format: str) -> str:
     for suffixes, fmt in SUFFIXES.items():
         if name.endswith(suffixes):
             return fmt
-    raise ValueError(f"cannot tell the format from the name {Path(path).name!r}; set spectrum_format "
+    raise ValueError(f"cannot tell the format from the name {quoted(Path(path).name)}; set spectrum_format "
                      f"({', '.join(READERS)})")
 
 
@@ -114,11 +116,11 @@ def _read(path: str, mtime: float, spectrum_format: str, time: str | None, site:
         try:
             wanted = np.datetime64(time).astype(times.dtype)
         except ValueError:
-            raise ValueError(f"spectrum_time {time!r} is not an ISO 8601 time") from None
+            raise ValueError(f"spectrum_time {quoted(time)} is not an ISO 8601 time") from None
         matches = np.flatnonzero(times == wanted)
         if matches.size == 0:
             shown = ", ".join(str(t)[:19] for t in times[:4]) + (" ..." if len(times) > 4 else "")
-            raise ValueError(f"spectrum_time {time!r} is not in the file (it has {len(times)} times: {shown})")
+            raise ValueError(f"spectrum_time {quoted(time)} is not in the file (it has {len(times)} times: {shown})")
         index = int(matches[0])
     sites = int(efth.sizes["site"])
     if site >= sites:

@@ -22,6 +22,7 @@ from typing import Annotated, Literal
 
 from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
+from ..io.messages import QUOTE_LIMIT, quoted
 from ..runtime.names import SPECTRAL_VARIANTS
 from .arrays import MAX_INITIAL_SPEED
 
@@ -40,6 +41,12 @@ MAX_FRAME = 10_000_000
 MIN_SUN_ELEVATION = 0.5
 #: Largest scene file accepted [bytes].
 MAX_SCENE_BYTES = 1 << 20
+#: Most bands of the spectral EXR [-]: 5 nm bands over 360–830 nm. Each band is a channel of Mitsuba's film, compiled
+#: into every kernel: measured here (16×9 px, 1 spp, cold kernel cache) 6 s to render with 16 bands, 10 s with 96,
+#: 18 s with 256, 41 s with 470 (0.86 GB), and a run with 470 was seen compiling for over 7 min on a loaded machine
+#: (issue 39). Narrower bands carry nothing the renderer has: the sky's spectra are tabulated every 40 nm
+#: (Hosek & Wilkie 2012) and the water's tables every 1–5 nm.
+MAX_SPECTRAL_BANDS = 94
 #: A scene name: a safe folder name (no "..", no hidden folder, no separator), at most 100 characters.
 SAFE_NAME = r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}"
 
@@ -60,13 +67,25 @@ class OutputSettings(_Section):
     )
     fps: float = Field(24.0, gt=0, le=1000, description="frames per second [s⁻¹]")
     resolution: tuple[Annotated[int, Field(ge=1, le=16384)], Annotated[int, Field(ge=1, le=16384)]] = (320, 180)
-    spp: int = Field(32, ge=1, le=1 << 20, description="samples per pixel")
+    spp: int = Field(24, ge=1, le=1 << 20, description="samples per pixel")
     directory: str = Field("outputs", min_length=1, description="output root; frames go to <directory>/<scene name>/")
-    spectral_bands: int = Field(0, ge=0, le=470, description="> 0: also write frame_NNNN_spectral.exr with this many "
-                                                             "equal bands of mean radiance over 360-830 nm")
+    spectral_bands: int = Field(0, ge=0, le=MAX_SPECTRAL_BANDS,
+                                description="> 0: also write frame_NNNN_spectral.exr with this many equal bands of "
+                                            f"mean radiance over 360-830 nm (at most {MAX_SPECTRAL_BANDS}: 5 nm bands)")
     passes: tuple[Literal["Z", "N", "P", "water", "foam", "objects", "water_path"], ...] = Field(
         (), description="render passes written into the frame EXR (docs/passes.md): Z, N, P, water, foam, objects, "
                         "water_path")
+
+    @field_validator("directory")
+    @classmethod
+    def _usable_folder(cls, value: str) -> str:
+        from ..io.paths import name_problem  # noqa: PLC0415
+
+        problem = name_problem(value)
+        if problem:
+            raise ValueError(f"{problem}; expected a folder name the file system can hold (taken literally: "
+                             f"no '~' or '$VAR' expansion)")
+        return value
 
     @field_validator("passes")
     @classmethod
@@ -107,7 +126,7 @@ class RenderSettings(_Section):
         description="path vertices before Russian roulette starts (as volpath's rr_depth; 'split' continues "
                     "its lobes with one less)")
     in_water_fraction: float = Field(
-        1.0, gt=0, le=1,
+        0.25, gt=0, le=1,
         description="('split') samples per pixel of the transmitted (in-water) lobe, as a fraction of spp: "
                     "below 1 a frame is two passes, the rest at spp and the in-water lobe at "
                     "max(1, round(fraction x spp)); the sum is unbiased")
@@ -120,7 +139,7 @@ class RenderSettings(_Section):
     def _spectral(cls, value: str) -> str:
         if value != "auto" and value not in SPECTRAL_VARIANTS:
             raise ValueError(f"expected 'auto' or one of {', '.join(SPECTRAL_VARIANTS)} (the scalar variants are "
-                             f"not supported: the renderer needs a JIT backend), got {value!r}")
+                             f"not supported: the renderer needs a JIT backend), got {quoted(value)}")
         return value
 
 
@@ -165,15 +184,15 @@ class OceanSettings(_Section):
     """
 
     model: Literal["FFT", "sum of sines", "Gerstner"] = "FFT"
-    spectrum: Literal["Phillips 2001", "Pierson-Moskowitz 1964", "JONSWAP 1973", "TMA 1985", "Elfouhaily 1997"] = (
-        "JONSWAP 1973"
-    )
+    spectrum: Literal["Phillips 2001", "Pierson-Moskowitz 1964", "JONSWAP 1973", "TMA 1985", "Elfouhaily 1997"] = Field(
+        "Elfouhaily 1997", description="wave spectrum; default 'Elfouhaily 1997' (wind form), 'JONSWAP 1973' when the "
+                                       "sea-state form (hs, tp) is given")
     spreading: Literal["cos2", "Mitsuyasu 1975", "Hasselmann 1980", "Donelan-Banner 1985"] | None = Field(
         None, description="directional spreading; none = the spectrum's own (Phillips) or Mitsuyasu 1975"
     )
-    wind_speed: float = Field(7.0, gt=0, le=60, description="wind speed 10 m above the sea [m s⁻¹]")
-    wind_direction: float = Field(30.0, ge=-360, le=360, description="direction the wind blows toward, counter-clockwise from +x (east) [deg]")
-    fetch: float = Field(1.0e5, gt=0, le=1.0e7, description="fetch of JONSWAP/TMA [m]")
+    wind_speed: float = Field(12.0, gt=0, le=60, description="wind speed 10 m above the sea [m s⁻¹]")
+    wind_direction: float = Field(60.0, ge=-360, le=360, description="direction the wind blows toward, counter-clockwise from +x (east) [deg]")
+    fetch: float = Field(5.0e4, gt=0, le=1.0e7, description="fetch of JONSWAP/TMA [m]")
     gamma: float = Field(3.3, ge=1, le=10, description="JONSWAP peak enhancement γ [-]")
     wave_depth: float = Field(float("inf"), gt=0, allow_inf_nan=True, description="water depth of the dispersion relation and TMA [m]; inf = deep")
     alpha: float | None = Field(None, gt=0, le=0.1, description="Phillips/PM constant α [-] (default 8.1e-3)")
@@ -182,9 +201,9 @@ class OceanSettings(_Section):
     swell_period: float = Field(10.0, gt=0, le=40, description="swell peak period [s]")
     swell_direction: float = Field(0.0, ge=-360, le=360, description="swell direction of travel, counter-clockwise from +x [deg]")
     swell_spreading_s: float = Field(25.0, ge=0, le=1000, description="cos-2s spreading exponent of the swell [-]")
-    patch_size: float = Field(128.0, gt=0, le=100_000, description="side of the largest periodic patch [m]")
-    cascades: int = Field(1, ge=1, le=6, description="number of FFT patches of decreasing size [-]")
-    resolution: int = Field(256, ge=8, le=8192, description="FFT grid points per side of each patch")
+    patch_size: float = Field(2400.0, gt=0, le=100_000, description="side of the largest periodic patch [m]")
+    cascades: int = Field(4, ge=1, le=6, description="number of FFT patches of decreasing size [-]")
+    resolution: int = Field(1024, ge=8, le=8192, description="FFT grid points per side of each patch")
     choppiness: float = Field(0.8, ge=0, le=3, description="horizontal displacement scale λ [-]")
     loop_period: float = Field(0.0, ge=0, le=1e6, description="period after which the sea repeats exactly [s]; 0 = never")
     seed: int = Field(1, ge=0, le=SEED_MAX, description="random seed of the wave amplitudes")
@@ -209,6 +228,15 @@ class OceanSettings(_Section):
     spectrum_site: int = Field(0, ge=0, description="file form: index of the site in the file [-]")
     spectrum_tail: float = Field(5.0, ge=0, le=8, description="file form: exponent n of the f⁻ⁿ tail beyond the "
                                  "file's last frequency (its shorter waves; WAVEWATCH III's 5) [-]; 0 = none")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _form_spectrum(cls, data):
+        # NOTE: one default per form: the wind form's is the default scene's Elfouhaily sea, the sea-state
+        # form's (hs, tp) JONSWAP, the spectrum its statistics are usually given for.
+        if isinstance(data, dict) and "spectrum" not in data and ({"hs", "tp"} & data.keys()):
+            return {**data, "spectrum": "JONSWAP 1973"}
+        return data
 
     @field_validator("fractal_size")
     @classmethod
@@ -286,7 +314,7 @@ class MeshSettings(_Section):
     with distance, out to ``outer_radius`` (the horizon), sampling every cascade.
     """
 
-    kind: Literal["patch", "radial"] = "patch"
+    kind: Literal["patch", "radial"] = "radial"
     inner_radius: float = Field(0.5, gt=0, description="radius of the first ring around the camera's nadir [m]")
     outer_radius: float = Field(8000.0, gt=0, le=1.0e6, description="radius of the last ring [m]")
     segments: int = Field(384, ge=8, le=16384, description="vertices per ring [-]")
@@ -309,7 +337,7 @@ class FoamSettings(_Section):
     ``threshold`` (the older, wind-blind rule; ``threshold`` only then).
     """
 
-    enabled: bool = False
+    enabled: bool = True
     criterion: Literal["crest acceleration", "Jacobian"] = "crest acceleration"
     breaking_acceleration: float = Field(
         0.665, gt=0, le=2, description="α: crests break where a_z < −α g (whole-sea statistics) [g]; fitted at 12 m s⁻¹")
@@ -561,8 +589,8 @@ class SunSettings(_Section):
     written they must equal those).
     """
 
-    elevation: float = Field(40.0, ge=MIN_SUN_ELEVATION, le=90, description="sun elevation above the horizon [deg]")
-    azimuth: float = Field(200.0, ge=-360, le=360, description="sun azimuth, clockwise from north (+y) [deg]")
+    elevation: float = Field(22.0, ge=MIN_SUN_ELEVATION, le=90, description="sun elevation above the horizon [deg]")
+    azimuth: float = Field(30.0, ge=-360, le=360, description="sun azimuth, clockwise from north (+y) [deg]")
     turbidity: float = Field(3.0, ge=1, le=10, description="atmospheric turbidity [-]")
     ground_albedo: float = Field(0.1, ge=0, le=1, description="ground albedo of the sky model [-]")
     sun_scale: float = Field(1.0, ge=0, le=1e3, description="scale of the solar radiance [-]")
@@ -659,7 +687,7 @@ class CameraSettings(_Section):
     first key's; leave them out (if written they must equal it).
     """
 
-    position: Vec3 = (0.0, 0.0, 5.0)
+    position: Vec3 = (0.0, 0.0, 8.0)
     target: Vec3 = (0.0, 40.0, 0.0)
     fov: float = Field(60.0, gt=0, lt=180, description="horizontal field of view [deg]")
     keys: tuple[CameraKeySettings, ...] = Field((), description="camera keyframes (time [s], position, target [m], "
@@ -822,7 +850,7 @@ class CoastalSettings(_Section):
     def _velocity(cls, value: float | str) -> float | str:
         if isinstance(value, str):
             if not value.lower().endswith(ARRAY_SUFFIXES):
-                raise ValueError(f"expected a velocity [m/s] or a {'/'.join(ARRAY_SUFFIXES)} file, got {value!r}")
+                raise ValueError(f"expected a velocity [m/s] or a {'/'.join(ARRAY_SUFFIXES)} file, got {quoted(value)}")
             return value
         if not (math.isfinite(value) and abs(value) <= MAX_INITIAL_SPEED):
             raise ValueError(f"expected a finite velocity within ±{MAX_INITIAL_SPEED:g} m/s, got {value}")
@@ -833,7 +861,7 @@ class CoastalSettings(_Section):
     def _source(cls, value: str, info) -> str:
         word = "plane beach" if info.field_name == "bathymetry" else "still"
         if value != word and not value.lower().endswith(ARRAY_SUFFIXES):
-            raise ValueError(f"expected {word!r} or a {'/'.join(ARRAY_SUFFIXES)} file, got {value!r}")
+            raise ValueError(f"expected {word!r} or a {'/'.join(ARRAY_SUFFIXES)} file, got {quoted(value)}")
         return value
 
     @property
@@ -997,8 +1025,8 @@ def _key_path(location: tuple) -> str:
     for item in location:
         if isinstance(item, int) and parts:
             parts[-1] += f"[{item}]"
-        else:
-            parts.append(str(item))
+        else:  # an unknown key is the file's text: quoted like any value when it is long
+            parts.append(str(item) if len(str(item)) <= QUOTE_LIMIT else quoted(item))
     if not parts:
         return "(top level)"
     if len(parts) == 1:
@@ -1043,7 +1071,7 @@ def _describe(error: dict) -> str:
     message = error["msg"].removeprefix("Value error, ")
     shown = error.get("input")
     if "got" not in message and not (isinstance(shown, (dict, list)) and len(repr(shown)) > 60):
-        message = f"{message} (got {shown!r})"
+        message = f"{message} (got {quoted(shown)})"
     meaning = _field_help(location)
     return f"{message}; {meaning}" if meaning else message
 
@@ -1094,7 +1122,7 @@ def load_scene(path: str | Path) -> Scene:
         raise SceneError(f"{path}: not usable TOML: tables or arrays nested too deeply") from None
     if "name" not in data:
         if not re.fullmatch(SAFE_NAME, path.stem):
-            raise SceneError(f"{path}: name: the file's name {path.stem!r} is not a safe folder name (letters, "
+            raise SceneError(f"{path}: name: the file's name {quoted(path.stem)} is not a safe folder name (letters, "
                              f"digits, '_', '.', '-', not starting with '.' or '-'); give name = \"...\" in the file")
         data["name"] = path.stem
     resolve_scene_paths(data, path.parent)

@@ -35,6 +35,31 @@ class FrameGeometry:
     foam: NDArray[np.float32] | None
     roughness: NDArray[np.float32] | None = None
 
+    def non_finite(self) -> dict[str, int]:
+        """How many values of each field are NaN or infinite (fields with none left out) [-]."""
+        counts = {}
+        for name in ("positions", "normals", "foam", "roughness"):
+            values = getattr(self, name)
+            if values is not None:
+                bad = int(np.count_nonzero(~np.isfinite(values)))
+                if bad:
+                    counts[name] = bad
+        return counts
+
+
+class FrameError(RuntimeError):
+    """A frame that cannot be made right from its scene (non-finite fields or pixels): one line naming the frame,
+    the stage and the keys behind it. Raised by :mod:`oceanrender.pipeline`; the frames before it are kept."""
+
+
+#: The scene keys that shape each field of a :class:`FrameGeometry`, named when a field comes out non-finite.
+FIELD_KEYS = {
+    "positions": "the wave model's heights and displacement: [ocean] (or [coastal])",
+    "normals": "the wave model's slopes: [ocean] (or [coastal])",
+    "foam": "the foam model: [foam] with [ocean] wind_speed and choppiness",
+    "roughness": "the unresolved slopes: [water] surface_roughness with the [ocean] spectrum",
+}
+
 
 @dataclass(frozen=True)
 class Terrain:

@@ -149,7 +149,13 @@ def crest_acceleration_threshold(alpha: float, choppiness: ArrayLike, resolved_s
     crests are most extreme: the waves the mesh lacks decide how much breaks,
     the resolved crests where.
     """
-    ratio = np.sqrt(np.asarray(resolved_slope_variance, dtype=np.float64) / float(total_slope_variance))
+    resolved = np.asarray(resolved_slope_variance, dtype=np.float64)
+    total = float(total_slope_variance)
+    if not (np.all(np.isfinite(resolved)) and np.isfinite(total) and total >= 0 and np.all(resolved >= 0)):
+        raise ValueError(f"slope variances must be finite and ≥ 0, got m_r = {resolved!r:.80}, m_t = {total!r}")
+    # NOTE: a sea without slopes (m_t = 0, e.g. a wind of 1e-9 m/s underflows) breaks nowhere whatever the
+    # ratio; the carried waves are then all of it (ratio 1), never 0/0. m_r ≤ m_t, so the ratio is in [0, 1].
+    ratio = np.sqrt(np.clip(resolved / total, 0.0, 1.0)) if total > 0 else np.ones_like(resolved)
     return 1.0 - np.asarray(choppiness, dtype=np.float64) * alpha * ratio  # a_z = −α g √(m_r/m_t), J ≈ 1 + λ a_z/g
 
 

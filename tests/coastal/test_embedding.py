@@ -10,7 +10,8 @@ import pytest
 from oceanrender.coastal import embedding
 from oceanrender.coastal.embedding import (BREAKER_INDEX_RMS, DomainFrame, SeaModes, blend_weight, depth_taper,
                                            incident_from_modes, sea_long_modes, terrain_height)
-from oceanrender.scene import SceneError, load_scene, scene_from_dict
+from oceanrender.scene import SceneError, load_scene
+from tests.scenes import scene_from_dict
 from oceanrender.waves.lod import bilinear_power_gain
 from oceanrender.waves.sea import SeaSurface
 from tests.tolerances import ROUNDOFF, ROUNDOFF32

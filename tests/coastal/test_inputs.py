@@ -5,7 +5,7 @@ import pytest
 
 from oceanrender.coastal import inputs
 from oceanrender.coastal.boundaries import IncidentWave, Transmissive, Wall
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from tests.scene.test_arrays import SMALL, coastal
 from tests.tolerances import ROUNDOFF
 

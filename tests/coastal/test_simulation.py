@@ -20,7 +20,7 @@ from oceanrender.coastal.simulation import (
     stop_times,
 )
 from oceanrender.io.frames import read_exr
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict, small_sea_text
 from oceanrender.scene.settings import CoastalSettings
 
 TINY_COASTAL = {"cells": [24, 16], "size": [12.0, 8.0], "origin": [-6.0, -2.0], "slope": 0.2, "offshore_depth": 0.8,
@@ -130,8 +130,8 @@ def test_changed_settings_start_the_simulation_anew(tmp_path):
 
 def test_cli_coastal_writes_fields(tmp_path, capsys):
     scene = tmp_path / "beach.toml"
-    scene.write_text("[output]\nframes = [0, 2]\nfps = 10.0\n[coastal]\n"
-                     + "".join(f"{k} = {list(v) if isinstance(v, list) else v}\n" for k, v in TINY_COASTAL.items()))
+    scene.write_text(small_sea_text("[output]\nframes = [0, 2]\nfps = 10.0\n[coastal]\n"
+                     + "".join(f"{k} = {list(v) if isinstance(v, list) else v}\n" for k, v in TINY_COASTAL.items())))
     assert main(["coastal", str(scene), "--out", str(tmp_path / "fields"), "--no-progress"]) == 0
     out = capsys.readouterr().out
     assert "simulated 2 frame(s)" in out and "cell-updates/s" in out
@@ -142,11 +142,11 @@ def test_cli_coastal_writes_fields(tmp_path, capsys):
 @pytest.mark.render
 def test_cli_renders_a_tiny_coastal_scene(tmp_path, capsys):
     scene = tmp_path / "beach.toml"
-    scene.write_text(
+    scene.write_text(small_sea_text(
         "[output]\nframes = [0, 1]\nfps = 10.0\nresolution = [24, 16]\nspp = 4\n"
         f"directory = '{tmp_path / 'out'}'\n[render]\nwhite_spp = 64\nmax_depth = 6\n"
         "[camera]\nposition = [0.0, 0.0, 5.0]\ntarget = [0.0, 1.5, 0.0]\n[coastal]\n"
-        + "".join(f"{k} = {list(v) if isinstance(v, list) else v}\n" for k, v in TINY_COASTAL.items()))
+        + "".join(f"{k} = {list(v) if isinstance(v, list) else v}\n" for k, v in TINY_COASTAL.items())))
     assert main(["render", str(scene), "--no-progress"]) == 0
     channels, meta = read_exr(tmp_path / "out" / "beach" / "frame_0000.exr")
     assert np.all(np.isfinite(channels["Y"])) and channels["Y"].min() > 0

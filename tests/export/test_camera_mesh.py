@@ -7,7 +7,7 @@ import plyfile
 
 from oceanrender.cli import main
 from oceanrender.export.camera_mesh import camera_mesh_table, export_camera_mesh
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict, small_sea_text
 from tests.tolerances import ROUNDOFF
 
 SCENE = {"name": "cm", "mesh": {"kind": "radial", "inner_radius": 0.5, "outer_radius": 2000.0, "segments": 48},
@@ -54,8 +54,8 @@ def test_lod_weights_filter_by_wavenumber_with_distance():
 
 def test_cli_geometry_camera_mesh(tmp_path, capsys):
     scene = tmp_path / "s.toml"
-    scene.write_text("[output]\nframes = [0, 1]\n[ocean]\nresolution = 16\npatch_size = 40.0\ncascades = 1\n"
-                     "[mesh]\nkind = 'radial'\nouter_radius = 500.0\nsegments = 24\n")
+    scene.write_text(small_sea_text("[output]\nframes = [0, 1]\n[ocean]\nresolution = 16\npatch_size = 40.0\ncascades = 1\n"
+                     "[mesh]\nkind = 'radial'\nouter_radius = 500.0\nsegments = 24\n"))
     assert main(["geometry", str(scene), "--out", str(tmp_path / "g"), "--camera-mesh"]) == 0
     assert (tmp_path / "g" / "camera_mesh.ply").is_file() and (tmp_path / "g" / "camera_mesh.json").is_file()
     assert "camera-following mesh" in capsys.readouterr().out

@@ -12,13 +12,14 @@ from oceanrender.scene import load_scene
 from oceanrender.waves.sea import SeaSurface
 
 from ..tolerances import ROUNDOFF32
+from tests.scenes import small_sea_text
 
 
 def _scene_file(tmp_path, extra=""):
     path = tmp_path / "usd.toml"
-    path.write_text('name = "usd"\n[output]\nframes = [2, 5]\nfps = 10.0\n[ocean]\nresolution = 64\ncascades = 2\n'
+    path.write_text(small_sea_text('name = "usd"\n[output]\nframes = [2, 5]\nfps = 10.0\n[ocean]\nresolution = 64\ncascades = 2\n'
                     '[camera]\nposition = [3.0, -4.0, 6.0]\ntarget = [3.0, 20.0, 0.0]\nfov = 50.0\n'
-                    '[sun]\nelevation = 30.0\nazimuth = 120.0\n' + extra)
+                    '[sun]\nelevation = 30.0\nazimuth = 120.0\n' + extra))
     return path
 
 

@@ -62,3 +62,18 @@ def test_frames_honour_the_umask(tmp_path, mask, mode):
     finally:
         os.umask(old)
     assert {p.name: p.stat().st_mode & 0o777 for p in tmp_path.iterdir()} == {"f.png": mode, "f.exr": mode}
+
+
+def test_frames_go_exactly_where_they_are_named_whatever_the_name(tmp_path, monkeypatch):
+    """A relative '~/…' is a folder of the working folder for every writer: imageio would expand it (issue 39)."""
+    home = tmp_path / "home"
+    home.mkdir()
+    monkeypatch.setenv("HOME", str(home))
+    monkeypatch.chdir(tmp_path)
+    rgb8 = np.full((4, 6, 3), 200, np.uint8)
+    write_png("~/tilde/frame_0000.png", rgb8)
+    write_exr("~/tilde/frame_0000.exr", {name: np.ones((4, 6), np.float32) for name in FRAME_CHANNELS})
+    written = tmp_path / "~" / "tilde"
+    assert sorted(p.name for p in written.iterdir()) == ["frame_0000.exr", "frame_0000.png"]
+    assert (written / "frame_0000.png").stat().st_size > 0 and list(home.iterdir()) == []
+    assert frame_is_complete("~/tilde/frame_0000.exr", "~/tilde/frame_0000.png", (6, 4))

@@ -102,3 +102,15 @@ def test_umask_mode_is_what_open_gives(tmp_path, mask, mode):
         assert (tmp_path / "f").stat().st_mode & 0o777 == mode
     finally:
         os.umask(old)
+
+
+def test_check_inside_takes_paths_literally_and_names_unusable_ones(tmp_path, monkeypatch):
+    """'~' is a folder name, not $HOME; a NUL byte is a PathProblem, not numpy's or os's ValueError (issue 39)."""
+    from oceanrender.io.paths import PathProblem, absolute, check_inside
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    assert absolute("~/x/$HOME") == tmp_path / "~" / "x" / "$HOME"
+    assert check_inside("~/tilde/scene", "~/tilde") == tmp_path / "~" / "tilde" / "scene"
+    with pytest.raises(PathProblem, match="NUL"):
+        check_inside("a\x00b/scene", "a\x00b")

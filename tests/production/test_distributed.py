@@ -14,7 +14,7 @@ from oceanrender.cli import main
 from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import frame_paths, render_sequence
 from oceanrender.production.distributed import render_distributed, sequence_key, worker_threads
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict, small_sea_text
 
 pytestmark = pytest.mark.render
 
@@ -33,9 +33,9 @@ def tiny_scene(**output):
 
 def tiny_toml(tmp_path: Path) -> Path:
     path = tmp_path / "tiny.toml"
-    path.write_text("[output]\nframes = [0, 4]\nresolution = [24, 16]\nspp = 4\n"
+    path.write_text(small_sea_text("[output]\nframes = [0, 4]\nresolution = [24, 16]\nspp = 4\n"
                     f"directory = '{tmp_path / 'out'}'\n"
-                    "[ocean]\nresolution = 16\npatch_size = 40.0\n[render]\nwhite_spp = 64\nmax_depth = 6\n")
+                    "[ocean]\nresolution = 16\npatch_size = 40.0\n[render]\nwhite_spp = 64\nmax_depth = 6\n"))
     return path
 
 

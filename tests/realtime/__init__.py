@@ -10,7 +10,7 @@ import numpy as np
 from oceanrender.optics.report import REPORT_WAVELENGTHS
 from oceanrender.realtime.bake import BakeSettings, SceneLight, bake_lut_set
 from oceanrender.realtime.luts import envmap_directions, spectra_to_XYZ
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 
 #: A small coastal grid (as tests/coastal) and small textures: fast to bake.
 TINY_COASTAL = {"cells": [24, 16], "size": [12.0, 8.0], "origin": [-6.0, -2.0], "slope": 0.2, "offshore_depth": 0.8,

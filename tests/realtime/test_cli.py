@@ -13,17 +13,18 @@ from oceanrender.realtime.files import read_lut_set
 from tests.tolerances import ROUNDOFF32
 
 from . import TINY_COASTAL
+from tests.scenes import small_sea_text
 
 pytestmark = pytest.mark.render
 
 
 def tiny_toml(folder):
     path = folder / "beach.toml"
-    path.write_text(
+    path.write_text(small_sea_text(
         "[output]\nframes = [0, 2]\nfps = 10.0\nresolution = [24, 16]\nspp = 2\n"
         f"directory = '{folder / 'out'}'\n[render]\nwhite_spp = 64\nmax_depth = 4\nintegrator = 'volpath'\n"
         "[camera]\nposition = [0.0, -1.0, 3.0]\ntarget = [0.0, 2.5, 0.0]\n[coastal]\n"
-        + "".join(f"{k} = {list(v) if isinstance(v, list) else v}\n" for k, v in TINY_COASTAL.items()))
+        + "".join(f"{k} = {list(v) if isinstance(v, list) else v}\n" for k, v in TINY_COASTAL.items())))
     return path
 
 

@@ -14,6 +14,7 @@ from oceanrender.realtime.glsl import GLContext, shipped_shader
 from oceanrender.realtime.validate import ShaderRunner, read_reference_set, validate_shader
 
 from . import TINY_COASTAL
+from tests.scenes import small_sea_text
 
 pytestmark = pytest.mark.render
 
@@ -53,7 +54,7 @@ def reference_sets(variant, tmp_path_factory):
     sets = {}
     for name, text in SCENES.items():
         scene = folder / f"{name}.toml"
-        scene.write_text(text + f"\n[vision]\nadaptation_luminance = 3000.0\n")
+        scene.write_text(small_sea_text(text + f"\n[vision]\nadaptation_luminance = 3000.0\n"))
         out = folder / f"{name}_ref"
         status, _, err = run(["reference", scene, "--out", out, "--variant", variant])
         assert status == 0, err

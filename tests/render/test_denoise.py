@@ -22,7 +22,7 @@ from oceanrender.render.denoise import (
     linear_sRGB_to_XYZ,
     split_features,
 )
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.surface.frame import FrameGeometry
 from tests.tolerances import ROUNDOFF
 

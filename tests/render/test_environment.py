@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from oceanrender.cli import main
-from oceanrender.scene import load_scene, scene_from_dict
+from oceanrender.scene import load_scene
+from tests.scenes import scene_from_dict
 
 SCENES = Path(__file__).resolve().parents[2] / "scenes"
 

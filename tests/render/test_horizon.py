@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from oceanrender.pipeline import Sequence
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 
 pytestmark = pytest.mark.render
 

@@ -6,7 +6,8 @@ import trimesh
 
 from oceanrender.cli import main
 from oceanrender.io.frames import read_exr
-from oceanrender.scene import OBJECT_MATERIALS, scene_from_dict
+from oceanrender.scene import OBJECT_MATERIALS
+from tests.scenes import scene_from_dict, small_sea_text
 
 
 @pytest.mark.parametrize("material", OBJECT_MATERIALS)
@@ -32,9 +33,9 @@ def _render(tmp_path, name, camera, with_box):
     objects = ('[[objects]]\nname = "box"\nmesh = "box.ply"\nposition = [0.0, 6.0, 0.0]\n'
                'material = "diffuse"\nalbedo = [0.9, 0.1, 0.05]\n') if with_box else ""
     path = tmp_path / f"{name}.toml"
-    path.write_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [48, 32]\nspp = 16\n'
+    path.write_text(small_sea_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [48, 32]\nspp = 16\n'
                     f'directory = "{tmp_path / "out"}"\n[ocean]\nwind_speed = 2.0\nresolution = 64\n'
-                    f'[sun]\nelevation = 60.0\nazimuth = 180.0\n{camera}\n{objects}')
+                    f'[sun]\nelevation = 60.0\nazimuth = 180.0\n{camera}\n{objects}'))
     assert main(["render", str(path), "--no-progress"]) == 0
     channels, meta = read_exr(tmp_path / "out" / name / "frame_0000.exr")
     return np.stack([channels[c] for c in "XYZ"], -1), meta

@@ -8,6 +8,7 @@ import trimesh
 
 from oceanrender.cli import main
 from oceanrender.io.frames import read_exr
+from tests.scenes import small_sea_text
 
 DEPTH, HEIGHT, N_WATER = 20.0, 5.0, 1.333
 ALL = '["Z", "N", "P", "water", "foam", "objects", "water_path"]'
@@ -16,9 +17,9 @@ ALL = '["Z", "N", "P", "water", "foam", "objects", "water_path"]'
 def _render(tmp_path, name, camera, extra=""):
     trimesh.creation.box(extents=(2.0, 2.0, 2.0)).export(tmp_path / "box.ply")
     path = tmp_path / f"{name}.toml"
-    path.write_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [64, 36]\nspp = 1\npasses = {ALL}\n'
+    path.write_text(small_sea_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [64, 36]\nspp = 1\npasses = {ALL}\n'
                     f'directory = "{tmp_path / "out"}"\n[ocean]\nwind_speed = 0.5\nresolution = 64\n'
-                    f'[water]\ndepth = {DEPTH}\nsurface_roughness = 0.0\n[sun]\nelevation = 45.0\n{camera}\n{extra}')
+                    f'[water]\ndepth = {DEPTH}\nsurface_roughness = 0.0\n[sun]\nelevation = 45.0\n{camera}\n{extra}'))
     assert main(["render", str(path), "--no-progress"]) == 0
     return read_exr(tmp_path / "out" / name / "frame_0000.exr")[0]
 

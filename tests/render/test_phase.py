@@ -171,7 +171,7 @@ def test_fournier_forand_table_is_sampled_exactly(variant):
 
 def test_particle_phase_is_a_scene_key():
     from oceanrender.optics.scene_water import water_optics
-    from oceanrender.scene.settings import scene_from_dict
+    from tests.scenes import scene_from_dict
 
     scene = scene_from_dict({"name": "ff", "composition": {"preset": "green coastal", "particle_phase": "Fournier-Forand"}})
     assert water_optics(scene).phase_table is not None

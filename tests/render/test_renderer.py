@@ -8,7 +8,7 @@ import pytest
 
 from oceanrender.render.renderer import K_M, adapting_white_XYZ, repair_non_finite
 from oceanrender.render.scene import CIE1931, perspective_sensor, sun_direction, sunsky_emitter, xyz_film
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.vision.model import VisionModel
 from tests.render.constant_sky import cmf_integrals, constant_sky_scene
 from tests.tolerances import ROUNDOFF

@@ -22,7 +22,7 @@ def flat_sea():
 def test_apply_camera_equals_a_scene_built_at_that_pose(variant):
     from oceanrender.render.denoise import FeatureRenderer
     from oceanrender.render.scene import apply_camera
-    from oceanrender.scene import scene_from_dict
+    from tests.scenes import scene_from_dict
 
     scene = scene_from_dict({"name": "t", "camera": {"position": [0, 0, 1], "target": [0, 100, 1], "fov": 40}})
     faces, geometry = flat_sea()
@@ -47,7 +47,7 @@ def test_apply_sun_equals_a_scene_built_with_that_sun(variant):
     import mitsuba as mi
 
     from oceanrender.render.scene import apply_sun, sunsky_emitter, xyz_film
-    from oceanrender.scene import scene_from_dict
+    from tests.scenes import scene_from_dict
 
     def white_plane(sun):
         return mi.load_dict({

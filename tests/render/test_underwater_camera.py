@@ -7,6 +7,7 @@ import pytest
 
 from oceanrender.cli import main
 from oceanrender.io.frames import read_exr
+from tests.scenes import small_sea_text
 
 #: Refractive index of the scenes below ([water] ior default) [-].
 N_WATER = 1.333
@@ -14,9 +15,9 @@ N_WATER = 1.333
 
 def _render(tmp_path, name, camera, extra="", resolution=(192, 192), spp=16):
     path = tmp_path / f"{name}.toml"
-    path.write_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [{resolution[0]}, {resolution[1]}]\n'
+    path.write_text(small_sea_text(f'name = "{name}"\n[output]\nframes = [0, 1]\nresolution = [{resolution[0]}, {resolution[1]}]\n'
                     f'spp = {spp}\ndirectory = "{tmp_path / "out"}"\n{camera}\n[sun]\nelevation = 50.0\n'
-                    f'azimuth = 180.0\n{extra}')
+                    f'azimuth = 180.0\n{extra}'))
     assert main(["render", str(path), "--no-progress"]) == 0
     return read_exr(tmp_path / "out" / name / "frame_0000.exr")
 
@@ -71,9 +72,9 @@ def test_a_camera_path_through_the_surface_renders_each_frame_from_its_side(tmp_
     keys = "".join(f'[[camera.keys]]\ntime = {t}\nposition = [0.0, 0.0, {z}]\ntarget = [0.0, 10.0, {z - 1.0}]\n'
                    f'fov = 70.0\n' for t, z in ((0.0, 2.0), (1.5, -2.0)))
     path = tmp_path / "dive.toml"
-    path.write_text(f'name = "dive"\n[output]\nframes = [0, 4]\nfps = 2.0\nresolution = [24, 16]\nspp = 4\n'
+    path.write_text(small_sea_text(f'name = "dive"\n[output]\nframes = [0, 4]\nfps = 2.0\nresolution = [24, 16]\nspp = 4\n'
                     f'directory = "{tmp_path / "out"}"\n[ocean]\nwind_speed = 1.0\nresolution = 64\n'
-                    f'[sun]\nelevation = 50.0\nazimuth = 180.0\n{keys}')
+                    f'[sun]\nelevation = 50.0\nazimuth = 180.0\n{keys}'))
     assert main(["render", str(path), "--no-progress"]) == 0
     sides = []
     for frame in range(4):

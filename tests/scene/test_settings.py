@@ -1,5 +1,6 @@
 """Scene files: validation errors name the file, the key and what was expected."""
 
+import json
 from pathlib import Path
 
 import numpy as np
@@ -381,3 +382,34 @@ def test_sea_forms_are_read():
     assert (wind.form, state.form, measured.form) == ("wind", "sea state", "file")
     assert state.hs == 1.4 and state.partitions[0].tp == 12.5 and state.surface_tension == 0.074
     assert measured.spectrum_file == str(EXAMPLE.resolve())  # relative to the scene file
+
+
+def test_an_empty_scene_is_the_default_scene(tmp_path):
+    """The schema's defaults are scenes/open_ocean.toml's (issue 39: an empty file rendered a patch and a void)."""
+    shipped = load_scene(Path(__file__).resolve().parents[2] / "scenes" / "open_ocean.toml").model_dump()
+    empty = load_scene(write(tmp_path, "")).model_dump()
+    shipped.pop("name"), empty.pop("name")
+    # The file names ior = 1.333; left out, the water's index is the same 1.333 (optics.water.water_ior).
+    assert shipped["water"].pop("ior") == 1.333 and empty["water"].pop("ior") is None
+    assert empty == shipped
+
+
+def test_the_sea_state_form_defaults_to_jonswap():
+    assert scene_from_dict({"name": "s", "ocean": {"hs": 2.0, "tp": 8.0}}).ocean.spectrum == "JONSWAP 1973"
+    assert scene_from_dict({"name": "s"}).ocean.spectrum == "Elfouhaily 1997"
+
+
+@pytest.mark.parametrize("directory, message", [("a\x00b", "NUL byte"), ("x" * 300, "longer than 255 bytes")])
+def test_output_directories_the_file_system_cannot_hold_are_refused_at_load(tmp_path, directory, message):
+    with pytest.raises(SceneError, match=rf"\[output\] directory: .*{message}"):
+        load_scene(write(tmp_path, f"[output]\ndirectory = {json.dumps(directory)}\n"))  # TOML reads \\u0000
+
+
+def test_long_values_and_keys_are_quoted_short(tmp_path):
+    """A 5000-character name or key is shown as ~80 characters and its length (issue 39)."""
+    with pytest.raises(SceneError) as error:
+        load_scene(write(tmp_path, 'name = "' + "x" * 5000 + '"\n'))
+    assert len(str(error.value)) < 400 and "(5002 characters)" in str(error.value)
+    with pytest.raises(SceneError) as error:
+        load_scene(write(tmp_path, "[output]\n" + "k" * 3000 + " = 1\n"))
+    assert len(str(error.value)) < 300 and "unknown key" in str(error.value)

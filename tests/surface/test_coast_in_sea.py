@@ -7,7 +7,7 @@ import pytest
 
 from oceanrender.coastal.embedding import terrain_height
 from oceanrender.coastal.simulation import run_simulation
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.surface.coast_in_sea import DRY_DROP, CoastInSea
 from oceanrender.surface.open_sea import WaterBody
 from tests.coastal.test_embedding import BAY

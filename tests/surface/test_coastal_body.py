@@ -5,7 +5,7 @@ import pytest
 
 from oceanrender.coastal.simulation import read_frame_fields, run_simulation
 from oceanrender.coastal.whitewater import bore_dissipation_rate
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.surface.coastal_body import CoastalBody
 
 BREAKING_BEACH = {"cells": [60, 40], "size": [15.0, 10.0], "origin": [-7.5, -3.0], "slope": 0.08,

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.surface.open_sea import WaterBody
 from oceanrender.surface.patch_mesh import signed_volume
 from oceanrender.surface.radial_mesh import HORIZON_GAP_DEG

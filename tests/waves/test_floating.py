@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict
 from oceanrender.waves.floating import (RESPONSE_HISTORY_TAUS, floating_pose, footprint, response_weights,
                                         wave_plane)
 from oceanrender.waves.gerstner import WaveComponent

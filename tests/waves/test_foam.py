@@ -180,3 +180,27 @@ def test_two_stage_bounds_and_ageing(rng):
     assert f > 0.99 and b > 0.99
     with pytest.raises(ValueError):
         two_stage_foam_step(0.0, 0.0, 0.0, 1.0, 0.5, 2.0, 0.0, 1.0)
+
+
+def test_crest_acceleration_threshold_is_finite_for_a_sea_without_slopes():
+    """A wind of 1e-9 m/s gives m_t = 0 (issue 39: a 0/0 made the whole sea NaN, then black)."""
+    threshold = crest_acceleration_threshold(0.665, 0.8, 0.0, 0.0)
+    assert np.isfinite(threshold) and threshold == pytest.approx(1.0 - 0.8 * 0.665, rel=ROUNDOFF)
+    # m_r a hair above m_t (rounding of total − unresolved) stays a ratio of 1, not above.
+    assert crest_acceleration_threshold(0.5, 1.0, 0.04 * (1 + 1e-12), 0.04) == pytest.approx(0.5, rel=ROUNDOFF)
+    with pytest.raises(ValueError, match="finite"):
+        crest_acceleration_threshold(0.5, 1.0, np.nan, 0.04)
+
+
+def test_a_near_calm_sea_with_foam_has_finite_fields_everywhere():
+    """The water body of issue 39's black sea (U10 = 1e-9 m/s, foam on): every field finite, no foam."""
+    from oceanrender.surface.open_sea import WaterBody
+    from tests.scenes import scene_from_dict
+
+    scene = scene_from_dict({"name": "calm", "ocean": {"wind_speed": 1e-9, "resolution": 32},
+                             "mesh": {"kind": "radial", "segments": 24}, "foam": {"enabled": True}})
+    body = WaterBody(scene)
+    assert np.isfinite(body.foam_threshold)
+    geometry = body.frame(0.5)
+    assert geometry.non_finite() == {}
+    assert geometry.foam is not None and float(np.max(geometry.foam)) == 0.0

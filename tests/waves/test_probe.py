@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from oceanrender.cli import PROBE_COLUMNS, main
-from oceanrender.scene import scene_from_dict
+from tests.scenes import scene_from_dict, small_sea_text
 from oceanrender.waves.probe import probe_sea
 from oceanrender.waves.sea import SeaSurface
 from oceanrender.waves.wave_spectra import dispersion_relation
@@ -72,7 +72,7 @@ def test_probe_refuses_bad_points():
 
 def _scene_file(tmp_path, extra=""):
     path = tmp_path / "probe.toml"
-    path.write_text('name = "probe"\n[output]\nframes = [0, 3]\n[ocean]\nresolution = 64\ncascades = 1\n' + extra)
+    path.write_text(small_sea_text('name = "probe"\n[output]\nframes = [0, 3]\n[ocean]\nresolution = 64\ncascades = 1\n' + extra))
     return path
 
 

@@ -55,7 +55,7 @@ def test_elevation_std_of_a_scene_is_the_pierson_moskowitz_height_over_four():
     trapezoid, 2048 points: ≪ 0.1 %), and the 1 % bound still fails for U₁₀ used
     as U₁₉.₅ (−5 %) or a lost factor 2 in the spreading (−29 %).
     """
-    from oceanrender.scene import scene_from_dict
+    from tests.scenes import scene_from_dict
     from oceanrender.waves.sea import elevation_std
 
     for u10 in (5.0, 10.0, 15.0):
