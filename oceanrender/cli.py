@@ -220,6 +220,11 @@ def scene_with_cli_overrides(scene: Scene, args: argparse.Namespace) -> Scene:
     if args.resolution is not None:
         output["resolution"] = args.resolution
     if args.out is not None:
+        from .io.paths import name_problem  # noqa: PLC0415
+
+        problem = name_problem(str(args.out))
+        if problem:
+            raise UserError(f"--out: {problem}; expected a folder that can be written")
         output["directory"] = str(args.out)
     render = {"variant": args.variant} if args.variant else {}
     if getattr(args, "denoise", False):

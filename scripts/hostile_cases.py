@@ -107,11 +107,35 @@ def cases(folder: Path):
     yield "--cluster tcp://", o, ["--cluster", "tcp://"], "render"
     yield "--cluster tcp://h:notaport", o, ["--cluster", "tcp://h:notaport"], "render"
     yield "the shipped open_ocean, 8×6", o, [], "render"
+    # Issue 39 (16×9, 1 spp as the issue ran them; no --out where the scene's own folder is the case).
+    small = ["--resolution", "16x9"]
+    yield ("39.1 [output] directory = \"~/tilde\"", set_key(o, "output", "directory", '"~/tilde"'), small, "render",
+           {"own_out": True})
+    yield ("39.1 [output] directory = \"$HOME/x\"", set_key(o, "output", "directory", '"$HOME/x"'), small, "render",
+           {"own_out": True})
+    yield ("39.2 wind_speed = 1e-9, foam on", set_key(set_key(o, "ocean", "wind_speed", "1e-9"), "foam", "enabled",
+                                                      "true"), small, "render")
+    yield "39.3 spectral_bands = 470", set_key(o, "output", "spectral_bands", "470"), small, "render"
+    yield "39.3 spectral_bands = 94", set_key(o, "output", "spectral_bands", "94"), small, "render"
+    yield "39.4 an empty scene file", "", small, "render"
+    yield "39.5 [output] directory with a NUL byte", set_key(o, "output", "directory", '"a\\u0000b"'), small, \
+        "render", {"own_out": True}
+    yield ("39.6 spp = 1048576 (stopped after 40 s: the estimate is the point)",
+           set_key(o, "output", "spp", "1048576"), small, "render", {"spp": None, "timeout": 40})
+    yield "39.6 a 5000-character name", 'name = "' + "x" * 5000 + '"\n' + o, small, "render"
 
 
-def run_case(folder: Path, label, scene, extra, command):
-    case = folder / re.sub(r"[^A-Za-z0-9]+", "_", label).strip("_")
+def run_case(folder: Path, label, scene, extra, command, options=None):
+    """One row; ``options``: ``own_out`` (no --out: the scene's folder, from the case's folder, with $HOME a
+    folder of its own), ``spp`` (None: the scene's), ``timeout`` [s] (a run stopped on purpose)."""
+    options = options or {}
+    case = folder / re.sub(r"[^A-Za-z0-9]+", "_", label).strip("_")[:80]
     case.mkdir()
+    home = folder / "home"
+    home.mkdir(exist_ok=True)
+    for cache in (".drjit", ".cache"):  # the real kernel caches, so nothing compiles twice
+        if (Path.home() / cache).is_dir() and not (home / cache).exists():
+            (home / cache).symlink_to(Path.home() / cache)
     stem = "scene"
     if isinstance(scene, tuple):
         stem, scene = scene
@@ -120,20 +144,31 @@ def run_case(folder: Path, label, scene, extra, command):
     out = case / "out"
     argv = [sys.executable, "-m", "oceanrender", command, str(path), "--frames", "0:1"]
     if command == "render":
-        argv += ["--resolution", "8x6", "--spp", "1", "--no-progress"]
-    argv += ["--out", str(out)]
+        argv += ["--resolution", "8x6", "--no-progress"]
+        argv += ["--spp", str(options.get("spp", 1))] if options.get("spp", 1) is not None else []
+    if options.get("own_out"):
+        out = case  # the scene's folder, whatever it expands to, must stay inside the case's folder
+    else:
+        argv += ["--out", str(out)]
     argv += extra
     before = {p for p in folder.rglob("*")}
     started = time.monotonic()
+    env = {**os.environ, "HOME": str(home)}
+    timeout = options.get("timeout", TIMEOUT_S)
     try:
-        done = subprocess.run(argv, capture_output=True, text=True, timeout=TIMEOUT_S, cwd=case, stdin=subprocess.PIPE)
+        done = subprocess.run(argv, capture_output=True, text=True, timeout=timeout, cwd=case, stdin=subprocess.PIPE,
+                              env=env)
         rc, err, std = done.returncode, done.stderr.strip().splitlines(), done.stdout.strip().splitlines()
-    except subprocess.TimeoutExpired:
-        rc, err, std = "hang", [], []
+    except subprocess.TimeoutExpired as exc:
+        std = (exc.stdout or b"").decode("utf-8", "replace").strip().splitlines()
+        rc, err = ("stopped" if "timeout" in options else "hang"), []
+        std = std[:1]  # the run's first line
     seconds = time.monotonic() - started
     new = {p for p in folder.rglob("*") if p.is_file()} - before
     outside = [p for p in new if out not in p.parents and p != out]
     line = (err[0] if err else (std[-1] if std else ""))[:160].replace("|", "\\|").replace(str(folder), "…")
+    if err and len(err[0]) > 160:
+        line += f" … ({len(err[0])} characters)"
     return f"| {label} | {rc} | {line} | {seconds:.1f} | {'yes: ' + str(len(outside)) if outside else 'no'} |"
 
 
@@ -142,8 +177,8 @@ def main() -> None:
     print("|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
-        for label, scene, extra, command in list(cases(folder)):
-            print(run_case(folder, label, scene, extra, command), flush=True)
+        for label, scene, extra, command, *options in list(cases(folder)):
+            print(run_case(folder, label, scene, extra, command, *options), flush=True)
 
 
 if __name__ == "__main__":

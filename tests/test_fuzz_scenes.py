@@ -14,7 +14,13 @@ through ``oceanrender render`` (``cli.main``) in a worker process
 * exit 2 with exactly one printable line on stderr, ``oceanrender: error: …``, and no file
   written anywhere;
 * exit 0 with the frame's EXR under ``--out``, every pixel finite, and no file
-  written outside ``--out``.
+  written outside ``--out``;
+* exit 1 with one line naming the frame and the stage that made it non-finite
+  (``… frame 0 …: stage geometry: …``), and that frame not written (issue 39).
+
+A scene whose ``[output] directory`` starts with ``~`` or ``$`` is rendered
+without ``--out``, from a worker whose ``$HOME`` is a folder of its own: the
+folder must be taken literally, and nothing may land in ``$HOME``.
 
 Anything else fails: a traceback, another exit status, a crash (the worker
 dies) or a hang (no answer within :data:`TIMEOUT_S`). The number of examples is
@@ -56,7 +62,8 @@ NAN, INF = float("nan"), float("inf")
 #: Values no key should accept silently. "@…" names a file made in the example's folder.
 HOSTILE = [NAN, INF, -INF, 0, -1, -1.0e308, 1.0e308, 1.0e-300, 2**32, 2**63 - 1, -(2**63), 0.5, "", "x" * 5000,
            "..", "../escape", "/dev/zero", "/dev/stdin", "/", "@fifo", "@folder", "@binary", "@nul", True, [],
-           [NAN, NAN, NAN], [INF, 0.0, 1.0], [0.0, 0.0, -1.0e6], {"a": 1}, "naïve", "a/b", "\t"]
+           [NAN, NAN, NAN], [INF, 0.0, 1.0], [0.0, 0.0, -1.0e6], {"a": 1}, "naïve", "a/b", "\t",
+           "~/tilde", "~", "$HOME/out", "${HOME}", "$PWD/x"]
 #: Keys a mutation may set although the shipped scenes leave them at their defaults.
 EXTRA_KEYS = [("water", "iop_table"), ("render", "seed"), ("ocean", "seed"), ("ocean", "loop_period"),
               ("ocean", "resolution"), ("ocean", "cascades"), ("mesh", "segments"), ("vision", "display_luminance"),
@@ -64,20 +71,31 @@ EXTRA_KEYS = [("water", "iop_table"), ("render", "seed"), ("ocean", "seed"), ("o
               ("water", "depth"), ("water", "ior"), ("camera", "position"), ("camera", "target"),
               ("output", "frames"), ("output", "resolution"), ("coastal", "checkpoint_interval"),
               ("coastal", "origin"), ("coastal", "bathymetry"), ("coastal", "initial_surface"), ("coastal", "cells"),
-              (None, "name"), ("render", "white_spp"), ("render", "max_depth"), ("render", "variant")]
+              (None, "name"), ("render", "white_spp"), ("render", "max_depth"), ("render", "variant"),
+              ("output", "directory"), ("output", "spectral_bands"), ("ocean", "wind_speed")]
 FACTORS = [-1.0, 0.0, 0.5, 2.0, 10.0, 1.0e3, 1.0e6]
 #: Values at the edges of what a careful user may choose: mostly valid, so that many examples render.
 EDGES = {("sun", "elevation"): [0.5, 1.0, 89.99, 90.0], ("sun", "turbidity"): [1.7, 10.0],
          ("camera", "position"): [[0.0, 0.0, 0.05], [0.0, 0.0, 500.0], [1.0e5, 1.0e5, 5.0]],
          ("camera", "target"): [[0.0, 10.0, 5.0], [0.0, 0.0, -10.0], [0.0, 1.0e4, 0.0]],
-         ("camera", "fov"): [1.0, 179.0], ("ocean", "wind_speed"): [0.5, 30.0], ("ocean", "choppiness"): [0.0, 2.0],
+         ("camera", "fov"): [1.0, 179.0], ("ocean", "wind_speed"): [1.0e-9, 1.0e-6, 0.5, 30.0, 60.0], ("ocean", "choppiness"): [0.0, 2.0],
          ("ocean", "resolution"): [8, 16], ("ocean", "cascades"): [1, 3, 8], ("water", "depth"): [0.5, 1.0e4],
          ("water", "ior"): [1.1, 2.5], ("vision", "display_luminance"): [1.0, 1.0e4],
          ("vision", "adaptation_luminance"): [1.0e-3, 1.0e5], ("render", "max_depth"): [1, 2],
          ("mesh", "outer_radius"): [10.0, 1.0e5], ("mesh", "segments"): [3, 8], ("foam", "enabled"): [False],
          ("composition", "chlorophyll_mg_m3"): [0.0, 100.0], ("render", "seed"): [2**32 - 2],
          ("coastal", "wave_height"): [0.0, 1.9], ("coastal", "slope"): [0.5], ("coastal", "manning"): [0.0],
-         ("coastal", "cells"): [[2, 2], [3, 200]], ("output", "fps"): [0.001, 1000.0]}
+         ("coastal", "cells"): [[2, 2], [3, 200]], ("output", "fps"): [0.001, 1000.0],
+         # Issue 39: near-zero and extreme physical values, large band counts, paths a shell would expand.
+         ("ocean", "fetch"): [1.0, 1.0e7], ("ocean", "swell_height"): [1.0e-9, 30.0],
+         ("ocean", "fractal_gamma"): [2.0], ("ocean", "surface_tension"): [1.0e-9, 0.1],
+         ("foam", "decay_time"): [1.0e-3, 1.0e4], ("output", "spectral_bands"): [1, 94, 95, 470, 10**6],
+         ("output", "directory"): ["~/tilde", "$HOME/out", "${PWD}/x", "~"],
+         ("water", "surface_roughness"): [0.0, 1.0]}
+#: Every optional model of the open sea on at once (the "models" mutation), so extreme values meet them all.
+ALL_MODELS = {("foam", "enabled"): True, ("ocean", "fractal_gamma"): 0.5, ("ocean", "swell_height"): 1.0,
+              ("output", "passes"): ["Z", "N", "P", "water", "foam", "objects", "water_path"],
+              ("output", "spectral_bands"): 4}
 
 
 # --- the scenes -------------------------------------------------------------------------------------------------
@@ -149,7 +167,7 @@ def mutated_scenes(draw) -> tuple[str, dict | bytes, list[str]]:
     done: list[str] = []
     for _ in range(draw(st.integers(1, 3))):
         kind = draw(st.sampled_from(["hostile", "hostile", "scale", "element", "delete", "unknown", "extra", "file",
-                                     "edge", "edge", "edge"]))
+                                     "edge", "edge", "edge", "models"]))
         leaves = [(s, k) for s, t in scene.items() if isinstance(t, dict) for k in t] + \
                  [(None, k) for k, v in scene.items() if not isinstance(v, dict)]
         if kind == "file":
@@ -165,7 +183,11 @@ def mutated_scenes(draw) -> tuple[str, dict | bytes, list[str]]:
             if how == "cut":
                 return base, text[: draw(st.integers(0, max(len(text) - 1, 0)))], done
             return base, text.replace(b"\n", b"\x00\n", 1), done
-        if kind == "edge":
+        if kind == "models":
+            for (section, key), value in ALL_MODELS.items():
+                scene.setdefault(section, {})[key] = copy.deepcopy(value)
+            done.append("every optional model on")
+        elif kind == "edge":
             section, key = draw(st.sampled_from(sorted(EDGES, key=str)))
             value = copy.deepcopy(draw(st.sampled_from(EDGES[section, key])))
             scene.setdefault(section, {})[key] = value
@@ -241,7 +263,15 @@ class Worker:
         self.cwd, self.process = cwd, None
 
     def start(self) -> None:
-        env = {**os.environ, "PYTHONPATH": str(ROOT)}
+        # NOTE: $HOME is a folder of the worker's own, so a file sent there by a '~' (issue 39) is seen; its
+        # kernel caches link to the real ones, so the worker compiles no more than it would.
+        home = self.cwd / "home"
+        home.mkdir(exist_ok=True)
+        for cache in (".drjit", ".cache"):
+            real = Path.home() / cache
+            if real.is_dir() and not (home / cache).exists():
+                (home / cache).symlink_to(real)
+        env = {**os.environ, "PYTHONPATH": str(ROOT), "HOME": str(home)}
         self.process = subprocess.Popen([sys.executable, "-m", "tests.fuzz_worker"], cwd=self.cwd, env=env,
                                         stdin=subprocess.PIPE, text=True)
 
@@ -307,6 +337,12 @@ def judge(answer: dict, out: Path, before: set[Path], after: set[Path]) -> tuple
         if new:
             return "wrote on error", f"files written before the error: {sorted(map(str, new))[:5]}"
         return "refused", None
+    if answer["rc"] == 1 and len(lines) == 1 and lines[0].startswith("oceanrender: error: ") \
+            and ": stage " in lines[0] and lines[0].isprintable():
+        # A frame the scene cannot make right (non-finite fields or pixels): one line, the frame not written.
+        if any(p.name.startswith("frame_") for p in new):
+            return "wrote on error", f"a refused frame was written: {sorted(map(str, new))[:5]}"
+        return "frame refused", None
     if answer["rc"] != 0:
         return f"exit {answer['rc']}", f"exit {answer['rc']}, stderr {lines[-5:]}"
     outside = [p for p in new if out not in p.parents]
@@ -342,8 +378,14 @@ def test_a_mutated_scene_is_refused_in_one_line_or_renders_finite_pixels(case, w
     logs = folder.parent / f"{folder.name}-logs"
     logs.mkdir()
     started = time.monotonic()
-    answer = worker.run(["render", str(path), "--resolution", "8x6", "--spp", "1", "--frames", "0:1",
-                         "--out", str(out), "--no-progress"], logs)
+    argv = ["render", str(path), "--resolution", "8x6", "--spp", "1", "--frames", "0:1", "--no-progress"]
+    directory = scene.get("output", {}).get("directory") if isinstance(scene, dict) else None
+    if isinstance(directory, str) and directory.startswith(("~", "$")):
+        # The scene's own folder, taken literally from the worker's folder (issue 39): no --out to hide it.
+        out = Path(os.path.abspath(os.path.join(worker.cwd, directory)))
+    else:
+        argv += ["--out", str(out)]
+    answer = worker.run(argv, logs)
     after = files_under(folder) | files_under(worker.cwd)
     outcome, problem = judge(answer, out, before, after)
     if REPORT:
@@ -353,4 +395,6 @@ def test_a_mutated_scene_is_refused_in_one_line_or_renders_finite_pixels(case, w
                                      "stderr": answer.get("stderr", "")[-300:], "problem": problem}) + "\n")
     shutil.rmtree(folder, ignore_errors=True)
     shutil.rmtree(logs, ignore_errors=True)
+    if worker.cwd in out.parents and out.name != "home":
+        shutil.rmtree(out, ignore_errors=True)  # a '~/…' folder of this example: the next starts clean
     assert problem is None, f"{base} with {done}: {problem}"
