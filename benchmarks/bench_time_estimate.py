@@ -26,15 +26,15 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-SCENES = ("open_ocean", "glitter_low_sun", "clear_open_ocean", "green_coastal", "turbid_estuary", "under_water")
-RESOLUTION = "160x90"
-FRAMES = "0:2"
+#: (scene, resolution, frames): six scenes at a small size, then `make render` as it is (the default scene).
+RUNS = [(name, "160x90", "0:2") for name in ("open_ocean", "glitter_low_sun", "clear_open_ocean", "green_coastal",
+                                            "turbid_estuary", "under_water")] + [("open_ocean", "320x180", "0:3")]
 
 
-def run(scene: str, out: Path) -> dict:
+def run(scene: str, resolution: str, frames: str, out: Path) -> dict:
     """Wall time, the estimate and the reported stages of one render."""
     argv = [sys.executable, "-m", "oceanrender", "render", str(ROOT / "scenes" / f"{scene}.toml"),
-            "--resolution", RESOLUTION, "--frames", FRAMES, "--out", str(out), "--no-progress"]
+            "--resolution", resolution, "--frames", frames, "--out", str(out), "--no-progress"]
     tic = time.perf_counter()
     done = subprocess.run(argv, capture_output=True, text=True, cwd=ROOT, check=True)
     wall = time.perf_counter() - tic
@@ -57,12 +57,12 @@ def main() -> None:
     from oceanrender.pipeline import METER_SPP  # noqa: PLC0415
     from oceanrender.scene import load_scene, with_overrides  # noqa: PLC0415
 
-    width, height = map(int, RESOLUTION.split("x"))
-    start, end = map(int, FRAMES.split(":"))
     rows, fit = [], []
     with tempfile.TemporaryDirectory() as tmp:
-        for name in SCENES:
-            measured = run(name, Path(tmp) / name)
+        for index, (name, resolution, frames) in enumerate(RUNS):
+            width, height = map(int, resolution.split("x"))
+            start, end = map(int, frames.split(":"))
+            measured = run(name, resolution, frames, Path(tmp) / f"{index}")
             scene = with_overrides(load_scene(ROOT / "scenes" / f"{name}.toml"),
                                    output={"resolution": (width, height), "frames": (start, end)})
             estimate = time_estimate(scene, "llvm_ad_spectral", METER_SPP)
@@ -70,20 +70,25 @@ def main() -> None:
             samples = width * height * scene.output.spp * (end - start)
             fraction = scene.render.in_water_fraction
             # Per-frame render seconds per sample = (a + b · fraction · vertices) / cores.
-            fit.append((1.0, fraction * vertices, measured["render"] / samples * len(os.sched_getaffinity(0))))
-            rows.append((name, scene.output.spp, fraction, vertices, estimate.total, measured["wall"],
-                         measured["render"], measured["meter"], measured["geometry"], measured["setup"]))
-    print(f"{RESOLUTION}, frames {FRAMES}, {len(os.sched_getaffinity(0))} cores, llvm_ad_spectral")
-    print("| scene | spp | in-water fraction | expected in-water vertices | estimated [s] | measured wall [s] | "
-          "measured / estimated | render | meter | geometry | set-up |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
-    for name, spp, fraction, vertices, est, wall, render, meter, geometry, setup in rows:
-        print(f"| {name} | {spp} | {fraction:g} | {vertices:.1f} | {est:.0f} | {wall:.0f} | {wall / est:.2f} | "
-              f"{render:.1f} | {meter:.1f} | {geometry:.1f} | {setup:.1f} |")
+            cores = len(os.sched_getaffinity(0))
+            calls = (end - start) * (2 if scene.render.in_water_fraction < 1 else 1)
+            # Render stage = calls · c0 + samples · (a + b · fraction · vertices) / cores.
+            fit.append((calls, samples / cores, samples / cores * fraction * vertices, measured["render"]))
+            rows.append((name, resolution, frames, scene.output.spp, fraction, vertices, estimate.total,
+                         measured["wall"], measured["render"], measured["meter"], measured["geometry"],
+                         measured["setup"]))
+    print(f"{len(os.sched_getaffinity(0))} cores, llvm_ad_spectral")
+    print("| scene | size | frames | spp | in-water fraction | expected in-water vertices | estimated [s] | "
+          "measured wall [s] | measured / estimated | render | meter | geometry | set-up |")
+    print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for name, size, frames, spp, fraction, vertices, est, wall, render, meter, geometry, setup in rows:
+        print(f"| {name} | {size} | {frames} | {spp} | {fraction:g} | {vertices:.1f} | {est:.0f} | {wall:.0f} | "
+              f"{wall / est:.2f} | {render:.1f} | {meter:.1f} | {geometry:.1f} | {setup:.1f} |")
     if "--fit" in sys.argv:
         a = np.array(fit)
-        (camera, water), *_ = np.linalg.lstsq(a[:, :2], a[:, 2], rcond=None)
-        print(f"fit: SECONDS_PER_SAMPLE_CORE = {camera:.3g}, SECONDS_PER_WATER_VERTEX_CORE = {water:.3g}")
+        (call, camera, water), *_ = np.linalg.lstsq(a[:, :3], a[:, 3], rcond=None)
+        print(f"fit: SECONDS_PER_RENDER_CALL = {call:.3g}, SECONDS_PER_SAMPLE_CORE = {camera:.3g}, "
+              f"SECONDS_PER_WATER_VERTEX_CORE = {water:.3g}")
 
 
 if __name__ == "__main__":

@@ -127,16 +127,18 @@ def check_memory(scene: Scene, source: str, renders: bool = True, available: flo
 
 #: Seconds per sample of the camera's pass on one core (split integrator, first lobe; default scene), measured
 #: by ``benchmarks/bench_time_estimate.py`` (BENCHMARKS.md, "Time estimate") [s].
-SECONDS_PER_SAMPLE_CORE = 2.2e-6
+SECONDS_PER_SAMPLE_CORE = 7.7e-6
 #: Seconds per sample and expected in-water vertex of the in-water lobe on one core, measured likewise [s].
-SECONDS_PER_WATER_VERTEX_CORE = 2.9e-6
+SECONDS_PER_WATER_VERTEX_CORE = 4.5e-6
+#: Fixed seconds of one render call (one pass: scene update, kernel launch, film read-back), measured likewise [s].
+SECONDS_PER_RENDER_CALL = 1.24
 #: The GPU's throughput against the 2-core CPU's on the same scene (57.5 against 0.69 M samples/s, H200,
 #: ../shared/NOTES.md) [-].
 GPU_SPEED_UP_OVER_TWO_CORES = 83.0
 #: Seconds per FFT grid point and cascade of one frame's geometry (fields, level pyramids, foam history), measured [s].
 SECONDS_PER_FFT_POINT = 1.7e-7
 #: A run's fixed set-up: Mitsuba's scene load, kernel compilation, the adapting white [s], measured (CPU; GPU).
-SETUP_SECONDS = {"cpu": 12.0, "gpu": 40.0}
+SETUP_SECONDS = {"cpu": 9.0, "gpu": 40.0}
 
 
 @dataclass(frozen=True)
@@ -206,17 +208,19 @@ def time_estimate(scene: Scene, variant: str, meter_spp: int, cores: int | None 
     per_sample /= GPU_SPEED_UP_OVER_TWO_CORES * 2 if gpu else cores
     width, height = scene.output.resolution
     pixels = width * height
-    render = pixels * scene.output.spp * per_sample
+    passes = 2 if (scene.render.integrator == "split" and scene.render.in_water_fraction < 1) else 1
+    call = SECONDS_PER_RENDER_CALL / (GPU_SPEED_UP_OVER_TWO_CORES if gpu else 1.0)
+    render = passes * call + pixels * scene.output.spp * per_sample
     geometry = 0.0
     if scene.ocean.model == "FFT":
         geometry = SECONDS_PER_FFT_POINT * scene.ocean.resolution ** 2 * scene.ocean.cascades * 2.0 / min(cores, 2)
     vision = scene.vision
     follows = vision.adaptation_luminance == "frame" and vision.adaptation_time > 0
-    meter = (geometry + pixels * meter_spp * per_sample) if follows else 0.0
+    meter = (geometry + call + pixels * meter_spp * per_sample) if follows else 0.0
     start, end = scene.output.frames
     window = len(adaptation_window(start, vision.adaptation_time, scene.output.fps)) if follows else 0
     setup = SETUP_SECONDS["gpu" if gpu else "cpu"] + max(window - 1, 0) * meter
-    per_frame = geometry + meter + render
+    per_frame = (meter if follows else geometry) + render  # the meter's geometry is the frame's, reused
     key = "[output] spp" if render >= max(geometry, meter) else (
         "[ocean] resolution" if geometry >= meter else "[vision] adaptation_luminance")
     return TimeEstimate(setup, per_frame, setup + (end - start) * per_frame, key)
