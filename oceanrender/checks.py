@@ -159,7 +159,7 @@ class TimeEstimate:
     key: str
 
     def line(self) -> str:
-        """``about 3 min 20 s (set-up 14 s, then 62 s per frame)``, for the run's first line."""
+        """``about 42 s (set-up 9 s, then 11 s per frame)``, for the run's first line."""
         return f"about {_duration(self.total)} (set-up {_duration(self.setup)}, then {_duration(self.per_frame)} per frame)"
 
 
@@ -176,9 +176,10 @@ def _duration(seconds: float) -> str:
 def expected_water_vertices(scene: Scene) -> float:
     """Expected scattering vertices of a path in the water before it is absorbed [-], at 550 nm.
 
-    1 / (1 − ω₀) with ω₀ = b/c the single-scattering albedo (the mean number of
-    collisions of a photon in an infinite medium: a geometric series of survivals,
-    e.g. Mobley 1994, "Light and Water", §5.8), capped by ``[render] max_depth``.
+    1 / (1 − ω₀) with ω₀ = b/c the single-scattering albedo: in an unbounded medium each
+    collision scatters with probability ω₀ and absorbs otherwise, so the number of
+    collisions is geometric with mean 1/(1 − ω₀). Capped by ``[render] max_depth``
+    (a bounded water body and Russian roulette end paths sooner: an upper estimate).
     """
     from .optics.scene_water import water_optics  # noqa: PLC0415
 
