@@ -258,12 +258,10 @@ def scene_folder(scene: Scene, source: str) -> Path:
     """``<[output] directory>/<scene name>``, refused if it resolves outside the directory (a link)."""
     from .io.paths import PathProblem, check_inside  # noqa: PLC0415
 
-    from .io.paths import absolute  # noqa: PLC0415
-
     root = scene.output.directory
     try:
         # NOTE: taken literally ('~' and '$HOME' are folder names here): the one resolved folder every writer gets.
-        return check_inside(absolute(root) / scene.name, root)
+        return check_inside(Path(root) / scene.name, root)
     except PathProblem as exc:
         raise UserError(f"{source}: name: {exc}; expected a folder inside the output directory") from None
     except OSError as exc:

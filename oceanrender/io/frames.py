@@ -19,7 +19,7 @@ import imageio.v3 as iio
 import numpy as np
 import OpenEXR
 
-from .paths import temporary_name, umask_mode
+from .paths import absolute, temporary_name, umask_mode
 
 #: Channels of every frame EXR, in order: absolute CIE 1931 XYZ [cd m⁻² for Y]
 #: and linear display sRGB after the vision model [display-relative, 1 = white].
@@ -30,10 +30,10 @@ FRAME_CHANNELS = ("X", "Y", "Z", "R", "G", "B")
 def atomic_path(path: str | Path, suffix: str) -> Iterator[Path]:
     """Yield a temporary path next to ``path``; rename it onto ``path`` on success.
 
-    Both are absolute (``os.path.abspath``: no ``~`` or ``$VAR`` expansion), so a
+    Both are absolute (:func:`~oceanrender.io.paths.absolute`: no ``~`` or ``$VAR`` expansion), so a
     writer that interprets names cannot put the file anywhere else.
     """
-    path = Path(os.path.abspath(os.fspath(path)))
+    path = absolute(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp_path = path.parent / temporary_name(path.stem, suffix)
     os.close(os.open(tmp_path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))

@@ -15,7 +15,7 @@ QUOTE_LIMIT = 80
 def quoted(value: object, limit: int = QUOTE_LIMIT) -> str:
     """``repr(value)`` for an error message, cut to ``limit`` characters with the full length said.
 
-    A 5000-character name is shown as ``'xxxx…… (5002 characters)``, not echoed whole.
+    A 5000-character name is shown as ``'xxxx… (5002 characters)``, not echoed whole.
     """
     text = repr(value)
     if len(text) <= limit:
