@@ -353,7 +353,9 @@ def _define_class() -> type:
                     continue
                 if mi.has_flag(bsdf.flags(), mi.BSDFFlags.Null):
                     return None
-                if bsdf.class_name() not in SPLIT_BSDF_CLASSES or not (
+                # (the sea's field-shaded surface, :mod:`.sea_shading`, wraps one of those BSDFs)
+                split_class = bsdf.class_name() in SPLIT_BSDF_CLASSES or getattr(bsdf, "wraps_dielectric", False)
+                if not split_class or not (
                         mi.has_flag(bsdf.flags(), mi.BSDFFlags.Reflection)
                         and mi.has_flag(bsdf.flags(), mi.BSDFFlags.Transmission)):
                     continue

@@ -23,6 +23,7 @@ from .scene import (
     K_M,
     FILM_RANGE_NM,
     ROUGHNESS_ATTRIBUTE,
+    SMOOTH_ALPHA,
     apply_camera,
     apply_sun,
     irregular_spectrum,
@@ -138,10 +139,11 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=No
     import mitsuba as mi  # noqa: PLC0415
 
     props = mi.Properties()
-    props["bsdf"] = mi.load_dict(bsdf)
+    props["bsdf"] = mi.load_dict(bsdf) if isinstance(bsdf, dict) else bsdf
     if medium is not None:
         props["interior"] = load_water_medium(medium) if isinstance(medium, dict) else medium
-    mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True)
+    mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True,
+                   has_vertex_texcoords=geometry.shading is not None)
     if geometry.foam is not None:
         mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(geometry.foam))
     if geometry.roughness is not None:
@@ -149,9 +151,32 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=No
     params = mi.traverse(mesh)
     params["vertex_positions"] = mitsuba_floats(geometry.positions)
     params["vertex_normals"] = mitsuba_floats(geometry.normals)
+    if geometry.shading is not None:
+        params["vertex_texcoords"] = mitsuba_floats(geometry.shading.texcoords)
     params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
     params.update()
     return mesh
+
+
+def field_shaded_surface(geometry: FrameGeometry, ior: float, roughness: float, foam_albedo: float | None,
+                         shading):
+    """The water surface BSDF shaded from the sea's fields at every hit (:mod:`.sea_shading`).
+
+    ``roughdielectric`` whose α is :class:`~.sea_shading.SeaRoughness` (the footprint's
+    unresolved slopes; off the upper surface the vertex α, or ``roughness``), blended with
+    foam when ``foam_albedo`` is given, inside :class:`~.sea_shading.SeaSurfaceBSDF`.
+    """
+    from .sea_shading import sea_foam, sea_roughness, sea_surface  # noqa: PLC0415
+
+    fallback = ({"type": "mesh_attribute", "name": ROUGHNESS_ATTRIBUTE} if geometry.roughness is not None
+                else {"type": "uniform", "value": max(float(roughness), SMOOTH_ALPHA)})
+    surface = {"type": "roughdielectric", "distribution": "beckmann", "alpha": sea_roughness(shading, fallback),
+               "int_ior": float(ior), "ext_ior": 1.0}
+    if foam_albedo is not None:
+        surface = foamy_surface_bsdf(surface, foam_albedo)
+        if getattr(shading, "foam_layout", None) is not None:  # the foam's field-resolution grid
+            surface["weight"] = sea_foam(shading)
+    return sea_surface(surface, shading)
 
 
 #: Shapes a vertical ray from the camera passes before it gives up looking for the water's surface.
@@ -246,6 +271,8 @@ def update_water_parameters(params, geometry: FrameGeometry) -> None:
         params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
     if geometry.roughness is not None:
         params[f"{WATER_ID}.{ROUGHNESS_ATTRIBUTE}"] = mitsuba_floats(geometry.roughness)
+    if geometry.shading is not None:
+        params[f"{WATER_ID}.vertex_texcoords"] = mitsuba_floats(geometry.shading.texcoords)
     params.update()
 
 
@@ -310,12 +337,15 @@ class WaterRenderer:
     #: Refractive index of the water [-] and the Mitsuba ids of the objects, for :meth:`passes`.
     n_water: float = 1.333
     object_ids: tuple[str, ...] = ()
+    #: The sea's shading fields on the device (:class:`~.sea_shading.SeaShading`), or None (vertex shading).
+    shading: object | None = None
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
               roughness: float = 0.0, spp: int | None = None, resolution: tuple[int, int] | None = None,
               sun_lobe_alpha: float | None = None, terrain: Terrain | None = None,
-              in_water_clamp: float = 0.0, objects: tuple = ()) -> "WaterRenderer":
+              in_water_clamp: float = 0.0, objects: tuple = (),
+              crop: tuple[int, int, int, int] | None = None) -> "WaterRenderer":
         """Load the scene once (vertex count and faces are then fixed).
 
         ``roughness`` is the Beckmann α of the water surface [-] (unused
@@ -323,14 +353,23 @@ class WaterRenderer:
         ``sun_lobe_alpha`` the total rms slope of the surface [-], which turns
         on the in-water sun sampling of the ``split`` integrator (when the
         scene's ``render.sun_sampling`` allows it); ``objects`` the ``[[objects]]``
-        posed at the first frame (:class:`~oceanrender.surface.objects.ObjectGeometry`).
+        posed at the first frame (:class:`~oceanrender.surface.objects.ObjectGeometry`); ``crop``
+        (x, y, width, height) [px] renders only that window of the frame (:func:`~.scene.xyz_film`).
         """
         import mitsuba as mi  # noqa: PLC0415
 
         width, height = resolution or settings.output.resolution
-        bsdf = water_surface_bsdf(water_ior(settings), roughness, per_vertex=geometry.roughness is not None)
-        if geometry.foam is not None:
-            bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
+        shading = None
+        if geometry.shading is not None:
+            from .sea_shading import SeaShading, pixel_angle  # noqa: PLC0415
+
+            shading = SeaShading(geometry.shading, settings.camera.position, pixel_angle(settings.camera.fov, width))
+            bsdf = field_shaded_surface(geometry, water_ior(settings), roughness,
+                                        settings.foam.albedo if geometry.foam is not None else None, shading)
+        else:
+            bsdf = water_surface_bsdf(water_ior(settings), roughness, per_vertex=geometry.roughness is not None)
+            if geometry.foam is not None:
+                bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
         medium = load_water_medium(water_medium(iops))
         mesh = water_mesh(faces, geometry, bsdf, medium)
         sun_sampling = {}
@@ -344,7 +383,7 @@ class WaterRenderer:
         integrator = {"kind": render.integrator, "max_depth": render.max_depth, "rr_depth": render.roulette_depth,
                       **sun_sampling}
         in_water = mi.load_dict(volumetric_integrator(**integrator, lobes="transmission")) if two_pass else None
-        sensor = perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands),
+        sensor = perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands, crop),
                                     spp or settings.output.spp)
         scene = mi.load_dict({
             "type": "scene",
@@ -363,7 +402,7 @@ class WaterRenderer:
                    bands=settings.output.spectral_bands, in_water=in_water,
                    in_water_fraction=render.in_water_fraction if two_pass else 1.0,
                    camera_position=np.asarray(settings.camera.position, float), n_water=water_ior(settings),
-                   object_ids=tuple(object_id(o.name) for o in objects))
+                   object_ids=tuple(object_id(o.name) for o in objects), shading=shading)
 
     def integrators(self) -> list:
         """The Mitsuba integrators a frame uses: the scene's, then the in-water pass's (two-pass frames)."""
@@ -379,6 +418,11 @@ class WaterRenderer:
         apply_camera(self.params, pose, sensor="sensor")
         apply_camera(self.params, pose, sensor=UNDERWATER_SENSOR)
         self.camera_position = pose.position
+        if self.shading is not None:
+            from .sea_shading import pixel_angle  # noqa: PLC0415
+
+            self.shading.set_camera(pose.position)
+            self.shading.set_pixel_angle(pixel_angle(pose.fov, self.resolution[0]))
 
     def camera_in_water(self) -> bool:
         """Whether the camera's pinhole is inside the water body of the current frame.
@@ -438,8 +482,11 @@ class WaterRenderer:
         self.params.update()
 
     def update_water(self, geometry: FrameGeometry) -> None:
-        """Replace the water mesh's vertex positions [m], unit normals and foam in place."""
+        """Replace the water mesh's vertex positions [m], unit normals and foam in place (and the sea's
+        shading fields)."""
         update_water_parameters(self.params, geometry)
+        if self.shading is not None and geometry.shading is not None:
+            self.shading.update(geometry.shading)
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
         """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count).

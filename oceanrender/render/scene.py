@@ -63,7 +63,7 @@ def band_channel_name(index: int) -> str:
 K_M = 683.0
 
 
-def xyz_film(width: int, height: int, bands: int = 0) -> dict:
+def xyz_film(width: int, height: int, bands: int = 0, crop: tuple[int, int, int, int] | None = None) -> dict:
     """``specfilm`` whose three channels are ∫L x̄ dλ, ∫L ȳ dλ, ∫L z̄ dλ (and optionally ``bands`` more).
 
     With ``bands`` > 0, channels ∫_{λ_i}^{λ_{i+1}} L dλ over equal bands of the
@@ -73,7 +73,8 @@ def xyz_film(width: int, height: int, bands: int = 0) -> dict:
     With radiance L in W m⁻² sr⁻¹ nm⁻¹ each channel is in W m⁻² sr⁻¹ (CIE-
     weighted); multiply by K_m = 683 lm W⁻¹ for cd m⁻². Channel names sort as
     X, Y, Z, which is the order Mitsuba stores them in. float32 storage: the
-    default float16 overflows on the sun.
+    default float16 overflows on the sun. ``crop`` (x, y, width, height) [px] renders only that
+    window of the image (Mitsuba's ``crop_offset_*``/``crop_*``).
     """
     film = {
         "type": "specfilm",
@@ -82,6 +83,11 @@ def xyz_film(width: int, height: int, bands: int = 0) -> dict:
         "component_format": "float32",
         "rfilter": {"type": "box"},
     }
+    if crop is not None:
+        x, y, w, h = (int(v) for v in crop)
+        if not (0 <= x and 0 <= y and w > 0 and h > 0 and x + w <= width and y + h <= height):
+            raise ValueError(f"crop {crop} must lie inside the {width}×{height} image")
+        film.update(crop_offset_x=x, crop_offset_y=y, crop_width=w, crop_height=h)
     for name, values in cmf_response_spectra().items():
         film[name] = {"type": "spectrum", "value": values}
     if bands:

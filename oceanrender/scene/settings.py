@@ -131,6 +131,9 @@ class RenderSettings(_Section):
                     "below 1 a frame is two passes, the rest at spp and the in-water lobe at "
                     "max(1, round(fraction x spp)); the sum is unbiased")
     denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
+    surface_shading: Literal["fields", "vertex"] = Field(
+        "fields", description="'fields': every water hit shaded from the sea's fields at its footprint (FFT sea, "
+        "surface_roughness 'auto'; docs/pixel_detail.md); 'vertex': normals, α and foam interpolated from the mesh")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, le=SEED_MAX, description="sampler seed (per frame: seed + frame, below 2³²)")
 

@@ -34,6 +34,7 @@ class FrameGeometry:
     normals: NDArray[np.float32]
     foam: NDArray[np.float32] | None
     roughness: NDArray[np.float32] | None = None
+    shading: "ShadingFields | None" = None
 
     def non_finite(self) -> dict[str, int]:
         """How many values of each field are NaN or infinite (fields with none left out) [-]."""
@@ -45,6 +46,94 @@ class FrameGeometry:
                 if bad:
                     counts[name] = bad
         return counts
+
+
+#: Number of values per node of a :class:`ShadingFields` level: ∂η/∂x₀, ∂η/∂y₀, ∂Dx/∂x₀, ∂Dy/∂y₀, ∂Dx/∂y₀ [-].
+SHADING_CHANNELS = 5
+
+
+@dataclass(frozen=True)
+class ShadingCascade:
+    """One periodic cascade of the sea as the renderer shades from it: its low-passed levels at one time.
+
+    Attributes
+    ----------
+    patch_size : float                 Side L of the periodic patch [m]; node (i, j) of a level of N² nodes
+                                       is at rest position (i L/N − L/2, j L/N − L/2).
+    band_top : float                   k_top, the cutoff of level 0 [rad m⁻¹]: level j keeps |k| < k_top / 2^j.
+    levels : tuple of (N_j, N_j, 5) float32
+                                       The level's fields at its nodes, rows along y (channels
+                                       :data:`SHADING_CHANNELS`: slopes and the displacement gradient, with
+                                       respect to rest coordinates). The pyramid's last, empty level
+                                       (no mode below its cutoff) is left out: it is zero.
+    """
+
+    patch_size: float
+    band_top: float
+    levels: tuple[NDArray[np.float32], ...]
+
+    @property
+    def level_count(self) -> int:
+        """Levels of the pyramid, the empty last one included [-]."""
+        return len(self.levels) + 1
+
+
+@dataclass(frozen=True)
+class FoamField:
+    """The fresh-foam coverage B on a polar grid of the foam's own (field) resolution, and its lace.
+
+    Attributes
+    ----------
+    center : (float, float)              The grid's centre, relative to :attr:`ShadingFields.origin` [m].
+    inner_radius, outer_radius : float   Radii of its first and last rings [m] (geometric in between).
+    rings, segments : int                Rings, and points per ring [-].
+    fresh : (1 + rings·segments,) float32   B [-] at the centre, then ring by ring (angle 2π i/segments from +x).
+    outside : float                      B beyond the last ring: the tracked foam's area mean [-].
+    lace : (M, M) float32                A periodic tile uniform on [0, 1) (rows along y,
+                                         :func:`~oceanrender.waves.foam.lace_tile_Worley1996`): foam is drawn
+                                         where lace < B, so its mean cover stays B.
+    lace_size : float                    Side of the lace tile [m].
+    """
+
+    center: tuple[float, float]
+    inner_radius: float
+    outer_radius: float
+    rings: int
+    segments: int
+    fresh: NDArray[np.float32]
+    outside: float
+    lace: NDArray[np.float32]
+    lace_size: float
+
+
+@dataclass(frozen=True)
+class ShadingFields:
+    """What the renderer needs to shade every water hit from the sea's own fields (docs/pixel_detail.md).
+
+    The renderer finds a hit's rest position from the mesh's texture coordinates
+    (``texcoords`` = rest (x, y) − ``origin``: the preimage of the hit under the
+    piecewise-linear displacement the mesh carries), its shading spacing Δ from its
+    footprint, and then takes, per cascade, levels ⌊s⌋ and ⌊s⌋ + 1 of the fractional
+    level s = log₂(k_top / k_f), k_f = π / (2Δ) (the rule of :mod:`oceanrender.waves.lod`):
+    the normal of the waves Δ resolves, and as Beckmann α the slopes of the rest, so that
+    resolved and unresolved slopes add up to the spectrum's at every Δ.
+
+    Attributes
+    ----------
+    cascades : tuple of ShadingCascade   The sea's cascades at the frame's time.
+    spacing : (M,) float64               Shading spacings Δ [m], increasing, log-spaced.
+    alpha : (M,) float64                 Beckmann α at each Δ [-]: √(total − resolved slope variance).
+    origin : (float, float)              Rest position of texture coordinate (0, 0) [m].
+    texcoords : (V, 2) float32           Per vertex of the body: rest (x, y) − origin [m] (0 off the surface).
+    foam : FoamField or None             The foam at field resolution (None: no foam, or the vertices' foam).
+    """
+
+    cascades: tuple[ShadingCascade, ...]
+    spacing: NDArray[np.float64]
+    alpha: NDArray[np.float64]
+    origin: tuple[float, float]
+    texcoords: NDArray[np.float32]
+    foam: FoamField | None = None
 
 
 class FrameError(RuntimeError):

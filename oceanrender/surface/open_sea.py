@@ -31,16 +31,59 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..scene import Scene
+from ..waves.cascades import sampled_field
 from ..waves.fft_ocean import OceanFields, OceanGrid
 from ..optics.foam import fresh_foam_decay_time
-from ..waves.foam import crest_acceleration_threshold, two_stage_foam_step
+from ..waves.foam import crest_acceleration_threshold, lace_tile_Perlin1985, two_stage_foam_step
 from ..waves.sea import SurfacePoints
-from .frame import FrameGeometry, Terrain
+from .frame import FoamField, FrameGeometry, ShadingCascade, ShadingFields, Terrain
 from .patch_mesh import water_body_faces, water_body_vertices
 from .radial_mesh import RadialGrid, horizon_radius, radial_body_faces, radial_body_vertices
 
 #: Most history steps of the foam accumulation per frame of a moving camera [-] (its history is not shared).
 FOAM_STEPS_MOVING = 8
+
+#: Segments of the foam's field-resolution grid (field shading): a polar grid of square cells, 2π/1024 of the
+#: distance wide (0.25 m at 40 m, 6 cm at 10 m), out to ``[foam] radius`` (1.0 million points at 200 m).
+FOAM_SEGMENTS = 1024
+
+#: The foam's lace tile (:func:`~oceanrender.waves.foam.lace_tile_Perlin1985`): side [m], texels per side,
+#: the wavelength of its field's peak [m] (the mesh of decaying whitecap foam, tens of centimetres) and the
+#: elongation of its lines along the wind [-].
+LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH = 16.0, 1024, 0.8, 3.0
+
+#: Shading spacings Δ of the α table of :class:`~.frame.ShadingFields` [m]: 1 mm to 100 km, 16 per decade
+#: (α² is smooth in log Δ: linear interpolation between them is within 1 % of the exact value).
+SHADING_SPACINGS = np.logspace(-3.0, 5.0, 129)
+
+#: The fields a cascade level gives the renderer, in :data:`~.frame.SHADING_CHANNELS` order.
+SHADING_NAMES = ("slope_x", "slope_y", "xx", "yy", "xy")
+
+
+def polar_grid_sample(grid: RadialGrid, values: NDArray, x: NDArray, y: NDArray, outside: float) -> NDArray:
+    """Values given at a :class:`RadialGrid`'s points (centre, then ring by ring), bilinear in (ring, angle) at (x, y) [m].
+
+    Inside the first ring: between the centre's value and the first ring's, linear in r; beyond the last
+    ring: ``outside``. The same lookup as the renderer's foam texture (:mod:`oceanrender.render.sea_shading`).
+    """
+    dx, dy = np.asarray(x, float) - grid.center[0], np.asarray(y, float) - grid.center[1]
+    r = np.hypot(dx, dy)
+    ring_values = np.asarray(values, float)[1:].reshape(grid.rings, grid.segments)
+    q = np.log(grid.outer_radius / grid.inner_radius) / (grid.rings - 1)
+    j = np.log(np.maximum(r, 1e-12) / grid.inner_radius) / q
+    a = np.mod(np.arctan2(dy, dx) / (2 * np.pi), 1.0) * grid.segments
+    i0 = np.floor(a).astype(np.int64) % grid.segments
+    i1 = (i0 + 1) % grid.segments
+    fa = a - np.floor(a)
+    j0 = np.clip(np.floor(j).astype(np.int64), 0, grid.rings - 1)
+    j1 = np.minimum(j0 + 1, grid.rings - 1)
+    fj = np.clip(j - j0, 0.0, 1.0)
+    inner = (1 - fa) * ring_values[j0, i0] + fa * ring_values[j0, i1]
+    outer = (1 - fa) * ring_values[j1, i0] + fa * ring_values[j1, i1]
+    value = (1 - fj) * inner + fj * outer
+    centre = float(values[0])
+    value = np.where(r < grid.inner_radius, centre + (r / grid.inner_radius) * (value - centre), value)
+    return np.where(r > grid.outer_radius * (1 + 1e-6), outside, value)  # (the last ring itself inside)
 
 
 class WaterBody:
@@ -171,11 +214,28 @@ class WaterBody:
         Radial mesh: those within ``[foam] radius`` of the camera (the rest
         take the tracked foam's mean); patch mesh: all.
         """
+        if self.foam_grid is not None:
+            x, y = self.foam_grid_at(t).points.T
+            return x, y, np.ones(x.shape, bool)
         rest_x, rest_y = self.rest_points(t)
         if self.radial is None:
             return rest_x, rest_y, np.ones(np.shape(rest_x), bool)
         cx, cy = self.grid_at(t).center
         return rest_x, rest_y, np.hypot(rest_x - cx, rest_y - cy) <= self.scene.foam.radius
+
+    @cached_property
+    def foam_grid(self) -> RadialGrid | None:
+        """The foam's own grid when every hit is shaded from the fields (radial mesh): a polar grid of
+        :data:`FOAM_SEGMENTS` square cells from the mesh's inner radius to ``[foam] radius``; else None
+        (foam at the mesh's vertices)."""
+        if self.radial is None or not self.shades_from_fields or not self.scene.foam.enabled:
+            return None
+        return RadialGrid.square_cells(self.radial.center, self.radial.inner_radius,
+                                       max(self.scene.foam.radius, 2.0 * self.radial.inner_radius), FOAM_SEGMENTS)
+
+    def foam_grid_at(self, t: float) -> RadialGrid:
+        """The foam grid under the camera at t [s] (it follows the camera like the mesh)."""
+        return replace(self.foam_grid, center=self.grid_at(t).center)
 
     def _foam_jacobian(self, x: NDArray, y: NDArray, t: float) -> NDArray[np.float64]:
         """The field the breaking criterion compares with J_c, at rest points (x, y), time t [s] [-].
@@ -192,8 +252,31 @@ class WaterBody:
         spacing = np.full(np.shape(x), self.scene.foam.filter_spacing)
         if self.scene.foam.criterion == "Jacobian" or self.sea.cascades is None:
             return self.sea.jacobian(x, y, float(t), spacing)
+        if self.foam_grid is not None:
+            return self._crest_field(np.ravel(x), np.ravel(y), float(t)).reshape(np.shape(x))
         xx, yy = self.sea._weighted(np.asarray(x, float), np.asarray(y, float), float(t), spacing, slice(5, 7))
         return 1.0 + xx + yy  # 1 + λ ∇·D: λ a_z/g of each deep-water mode
+
+    def _crest_field(self, x: NDArray, y: NDArray, t: float) -> NDArray[np.float64]:
+        """1 + λ ∇·D of the waves a ``filter_spacing`` mesh carries at rest points (x, y), time t [s] [-].
+
+        The same value as the ``"crest acceleration"`` branch of :meth:`_foam_jacobian`
+        (every point has the one spacing, so each cascade's two level weights are
+        constants), summed by the compiled periodic stencil
+        (:func:`~oceanrender.waves.grid_sampling.add_periodic_bilinear`).
+        """
+        from ..waves.grid_sampling import add_periodic_bilinear  # noqa: PLC0415
+
+        out = np.ones(x.shape)
+        for levels in self.sea.levels:
+            weights = levels.weights(np.asarray(self.scene.foam.filter_spacing), ())
+            for j, ocean in enumerate(levels.oceans):
+                if ocean is None or not weights[j] > 0:
+                    continue
+                f = ocean.fields(t)
+                divergence = (f.jacobian_xx - 1) + (f.jacobian_yy - 1)
+                add_periodic_bilinear(divergence, ocean.grid.patch_size, x, y, float(weights[j]), out)
+        return out
 
     def foam_grid_times(self, t: float) -> tuple[list[float], float]:
         """The foam history's grid times for a frame at t [s] and the grid step [s].
@@ -260,10 +343,11 @@ class WaterBody:
         weight = min(max((t - times[-2]) / step, 0.0), 1.0)  # t in [times[-2], times[-1]]
         (f0, b0), (f1, b1) = states[-2], states[-1]
         values = np.stack([(1 - weight) * f0 + weight * f1, (1 - weight) * b0 + weight * b1])
-        area = self.spacing[tracked] ** 2 if self.spacing is not None else np.ones(x.shape)
+        spacing = self.foam_grid_at(t).spacing if self.foam_grid is not None else self.spacing
+        area = spacing[tracked] ** 2 if spacing is not None else np.ones(x.shape)
         mean = values.reshape(2, -1) @ area.ravel() / area.sum()  # area-weighted mean of the tracked foam
         self._foam_mean = mean
-        if tracked.all():  # (the patch mesh's grid shape back from the flat tracked points)
+        if self.radial is None:  # (the patch mesh's grid shape back from the flat tracked points)
             return values[0].reshape(np.shape(rest_x)), values[1].reshape(np.shape(rest_x))
         cx, cy = self.grid_at(t).center
         blend = np.clip(np.hypot(x - cx, y - cy) / (0.5 * foam.radius) - 1.0, 0.0, 1.0)  # 0 at R/2, 1 at R
@@ -285,6 +369,11 @@ class WaterBody:
         """
         coverage, fresh = self.foam_state(t)
         count = vertex_count or self.vertex_count
+        if self.foam_grid is not None:  # the grid's foam at the mesh's rest points
+            grid = self.foam_grid_at(t)
+            x, y = self.rest_points(t)
+            coverage = polar_grid_sample(grid, coverage, x, y, self._foam_mean[0])
+            fresh = polar_grid_sample(grid, fresh, x, y, self._foam_mean[1])
         out = np.zeros((2, count), np.float32)
         for row, top in enumerate((coverage, fresh)):
             if self.radial is None:  # the patch mesh repeats row/column 0 at the far edge
@@ -293,6 +382,77 @@ class WaterBody:
             if self.radial is not None:  # the far ring: the far sea's mean foam
                 out[row, top.size: top.size + self.radial.segments] = self._foam_mean[row]
         return out[0], out[1]
+
+    @cached_property
+    def shading_alpha(self) -> NDArray[np.float64]:
+        """Beckmann α [-] at the shading spacings :data:`SHADING_SPACINGS`: √(total − resolved slope variance)."""
+        return np.sqrt(self.sea.unresolved_slope_variance(SHADING_SPACINGS))
+
+    @property
+    def shades_from_fields(self) -> bool:
+        """Whether the renderer shades every hit from the sea's fields: ``[render] surface_shading = "fields"``
+        and an FFT sea with ``surface_roughness = "auto"`` (its α then follows the footprint)."""
+        return (self.sea.cascades is not None and self.scene.water.surface_roughness == "auto"
+                and self.scene.render.surface_shading == "fields")
+
+    def texcoords(self, t: float, vertex_count: int) -> tuple[NDArray[np.float32], tuple[float, float]]:
+        """Texture coordinates (rest (x, y) − origin) [m] of the body's vertices at t [s], and the origin [m].
+
+        The origin is the grid's centre (radial mesh) or (0, 0) (patch), so the
+        coordinates keep float32's millimetres near the camera. Skirt and bottom: 0.
+        """
+        out = np.zeros((vertex_count, 2), np.float32)
+        if self.radial is None:
+            n = self.scene.ocean.resolution
+            edge = np.arange(n + 1) * (self.scene.ocean.patch_size / n) - self.scene.ocean.patch_size / 2
+            xx, yy = np.meshgrid(edge, edge)
+            out[: (n + 1) ** 2] = np.column_stack([xx.ravel(), yy.ravel()])
+            return out, (0.0, 0.0)
+        grid = self.grid_at(t)
+        cx, cy = grid.center
+        out[: len(grid.points)] = grid.points - (cx, cy)
+        far = horizon_radius(self.camera_height(t), self.radial.outer_radius, self.radial.segments)
+        theta = 2.0 * np.pi * np.arange(grid.segments) / grid.segments
+        out[len(grid.points): len(grid.points) + grid.segments] = np.column_stack([far * np.cos(theta),
+                                                                                   far * np.sin(theta)])
+        return out, (float(cx), float(cy))
+
+    def shading_fields(self, t: float, vertex_count: int) -> ShadingFields:
+        """The cascades' level pyramids at t [s] as the renderer shades from them (:class:`~.frame.ShadingFields`).
+
+        Every level's slopes and displacement gradient at its own nodes: the same
+        (gain-compensated, hashed-phase) levels the mesh's vertices are sampled from
+        (:class:`~oceanrender.waves.lod.CascadeLevels`), so the shading carries the
+        geometry's waves with their phases.
+        """
+        cascades = []
+        for levels in self.sea.levels:
+            stacks = []
+            for ocean in levels.oceans[:-1]:
+                f = ocean.fields(float(t))
+                stacks.append(np.stack([sampled_field(f, name) for name in SHADING_NAMES], axis=-1).astype(np.float32))
+            cascades.append(ShadingCascade(float(levels.grid.patch_size), float(levels.band_top), tuple(stacks)))
+        coords, origin = self.texcoords(t, vertex_count)
+        return ShadingFields(tuple(cascades), SHADING_SPACINGS, self.shading_alpha, origin, coords,
+                             self.foam_field(t, origin))
+
+    @cached_property
+    def lace(self) -> NDArray[np.float32]:
+        """The foam's lace tile (:data:`LACE_SIZE`, …), drawn out along the wind, seeded by the sea's seed."""
+        direction = self.scene.ocean.wind_direction if self.scene.ocean.form == "wind" else (
+            self.scene.ocean.direction if self.scene.ocean.direction is not None else self.scene.ocean.wind_direction)
+        return lace_tile_Perlin1985(LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH, math.radians(direction),
+                                    self.scene.ocean.seed)
+
+    def foam_field(self, t: float, origin: tuple[float, float]) -> FoamField | None:
+        """B on the foam grid at t [s] (:meth:`foam_state`), for the renderer; None without the foam grid."""
+        if self.foam_grid is None:
+            return None
+        grid = self.foam_grid_at(t)
+        _, fresh = self.foam_state(t)
+        return FoamField((grid.center[0] - origin[0], grid.center[1] - origin[1]), grid.inner_radius,
+                         grid.outer_radius, grid.rings, grid.segments, np.asarray(fresh, np.float32),
+                         float(self._foam_mean[1]), self.lace, LACE_SIZE)
 
     def frame(self, t: float) -> FrameGeometry:
         """The closed body at time t [s]; its ``foam`` is the fresh-foam coverage B (:meth:`vertex_foam`)."""
@@ -311,4 +471,5 @@ class WaterBody:
         if self.scene.foam.enabled:
             foam = self.vertex_foam(t, len(positions))[1]
         roughness = self.vertex_roughness if self.per_vertex_roughness else None
-        return FrameGeometry(positions, normals, foam, roughness)
+        shading = self.shading_fields(t, len(positions)) if self.shades_from_fields else None
+        return FrameGeometry(positions, normals, foam, roughness, shading)

@@ -77,6 +77,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = [
+    "lace_tile_Perlin1985",
     "FOAM_DECAY_TIME_SEAWATER",
     "whitecap_fraction_MonahanOMuircheartaigh1980",
     "crest_acceleration_threshold",
@@ -380,3 +381,51 @@ class FoamAccumulator:
         return cls(threshold=float(state["threshold"]), decay_time=float(state["decay_time"]),
                    gain=float(state["gain"]), coverage=None if coverage is None else np.array(coverage),
                    time=None if state.get("time") is None else float(state["time"]))
+
+
+def lace_tile_Perlin1985(size: float, resolution: int, scale: float, stretch: float, direction: float,
+                         seed: int) -> NDArray[np.float32]:
+    """A periodic tile of foam lace: the magnitude of a band-pass Gaussian field, rank-mapped to uniform [-].
+
+    |G| of a zero-mean Gaussian random field G is 0 along G's zero contours, a network
+    of thin, curved, connected lines (Perlin's "turbulence", the sum of |noise|,
+    Perlin 1985, §5). G here has the power spectrum exp(−(ln(k'/k₀))²/(2·0.35²)) in
+    the stretched wavenumber k' = √((k_∥ s)² + k_⊥²), k₀ = 2π/``scale`` (one octave wide,
+    log-normal), so its lines are ``stretch`` times longer along ``direction`` (the wind:
+    trailing foam is drawn out downwind) than across. Mapped through its own empirical
+    distribution (ranks / texel count) the tile L is uniform on [0, 1): foam drawn where
+    L < B covers on average the fraction B of the surface (the fresh-foam coverage of
+    :func:`two_stage_foam_step` keeps its mean), a full sheet where B → 1 and, as B falls,
+    the lace along G's zero lines (the look of decaying whitecaps, Monahan's stage B).
+
+    Parameters
+    ----------
+    size : float        Side of the periodic tile [m].
+    resolution : int    Texels per side [-].
+    scale : float       Wavelength 2π/k₀ of the field's spectral peak [m]: the lace's mesh is about half of it.
+    stretch : float     Elongation of the lines along ``direction`` (≥ 1) [-].
+    direction : float   Direction of elongation, counter-clockwise from +x [rad].
+    seed : int          Seed of the field.
+
+    Returns
+    -------
+    (resolution, resolution) float32, rows along y; texel (i, j) at ((i + ½), (j + ½)) size/resolution.
+
+    References
+    ----------
+    .. [1] K. Perlin, "An image synthesizer," Proc. SIGGRAPH '85, 287–296, doi:10.1145/325165.325247.
+    """
+    rng = np.random.default_rng(seed)
+    k = 2.0 * np.pi * np.fft.fftfreq(resolution, d=size / resolution)
+    kx, ky = np.meshgrid(k, k)
+    along = kx * np.cos(direction) + ky * np.sin(direction)
+    across = -kx * np.sin(direction) + ky * np.cos(direction)
+    stretched = np.hypot(along * stretch, across)
+    peak = 2.0 * np.pi / scale
+    amplitude = np.exp(-np.log(np.maximum(stretched, 1e-12) / peak) ** 2 / (4.0 * 0.35**2))
+    amplitude[0, 0] = 0.0
+    noise = rng.standard_normal((resolution, resolution)) + 1j * rng.standard_normal((resolution, resolution))
+    field = np.abs(np.real(np.fft.ifft2(noise * amplitude)))
+    ranks = np.empty(field.size)
+    ranks[np.argsort(field.ravel(), kind="stable")] = (np.arange(field.size) + 0.5) / field.size
+    return ranks.reshape(resolution, resolution).astype(np.float32)

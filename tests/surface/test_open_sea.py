@@ -134,7 +134,8 @@ def test_resumed_frames_equal_uninterrupted_ones():
 def test_foam_beyond_the_radius_is_the_tracked_mean():
     settings = scene(ocean={"resolution": 64, "patch_size": 40.0, "cascades": 1, "wind_speed": 16.0},
                      mesh={"kind": "radial", "outer_radius": 400.0, "segments": 64},
-                     foam={"enabled": True, "decay_time": 1.0, "history": 2.0, "radius": 60.0})
+                     foam={"enabled": True, "decay_time": 1.0, "history": 2.0, "radius": 60.0},
+                     render={"surface_shading": "vertex"})  # foam tracked at the mesh's vertices
     body = WaterBody(settings)
     coverage, fresh = body.vertex_foam(2.0)
     x, y, tracked = body.foam_points(2.0)
@@ -164,3 +165,65 @@ def test_fractal_detail_blends_onto_the_sea():
                                atol=ROUNDOFF * np.abs(sa.displacement[..., :2]).max())
     # the detail's slopes tilt the normals (unit vectors, scale 1) far beyond round-off
     assert np.abs(sb.normals - sa.normals).max() > 1e-3
+
+
+def field_sea(**foam):
+    return scene(ocean={"resolution": 32, "patch_size": 64.0, "cascades": 2, "wind_speed": 12.0},
+                 mesh={"kind": "radial", "outer_radius": 300.0, "segments": 32},
+                 foam={"enabled": True, "radius": 20.0, "history": 0.5, **foam},
+                 camera={"position": [4.0, 1.0, 5.0], "target": [4.0, 30.0, 0.0]})
+
+
+def test_shading_fields_carry_the_levels_and_rest_positions():
+    body = WaterBody(field_sea())
+    geometry = body.frame(0.5)
+    fields = geometry.shading
+    assert fields is not None and len(fields.cascades) == 2
+    for cascade, levels in zip(fields.cascades, body.sea.levels):
+        assert cascade.level_count == levels.count and cascade.band_top == levels.band_top
+        f = levels.oceans[0].fields(0.5)
+        np.testing.assert_array_equal(cascade.levels[0][..., 0], f.slope_x.astype(np.float32))
+    # texture coordinates: the top vertices' rest positions relative to the origin (the grid's centre)
+    grid = body.grid_at(0.5)
+    top = len(grid.points)
+    np.testing.assert_allclose(fields.texcoords[:top] + fields.origin, grid.points, atol=ROUNDOFF32 * 300.0)
+    assert fields.origin == (4.0, 1.0)
+    # α: √(unresolved) at each tabulated spacing, increasing with the spacing
+    assert np.all(np.diff(fields.alpha) >= -ROUNDOFF) and fields.alpha[-1] ** 2 == pytest.approx(
+        body.sea.total_slope_variance, rel=1e-3)
+
+
+def test_vertex_shading_has_no_fields():
+    s = scene(ocean={"resolution": 32, "patch_size": 64.0, "cascades": 2},
+              mesh={"kind": "radial", "outer_radius": 300.0, "segments": 32}, render={"surface_shading": "vertex"})
+    assert WaterBody(s).frame(0.0).shading is None
+    fixed = scene(water={"surface_roughness": 0.1})
+    assert WaterBody(fixed).frame(0.0).shading is None
+
+
+def test_crest_field_on_the_foam_grid_is_the_sea_s():
+    # The compiled sum over levels equals SeaSurface's interpolation of the same levels (1 + xx + yy).
+    body = WaterBody(field_sea())
+    x, y = body.foam_grid_at(0.25).points[::97].T
+    fast = body._crest_field(x, y, 0.25)
+    spacing = np.full(x.shape, body.scene.foam.filter_spacing)
+    xx, yy = body.sea._weighted(x, y, 0.25, spacing, slice(5, 7))
+    np.testing.assert_allclose(fast, 1.0 + xx + yy, rtol=0, atol=ROUNDOFF32)
+
+
+def test_foam_grid_is_finer_than_the_mesh_and_its_lookup_reproduces_it():
+    from oceanrender.surface.open_sea import polar_grid_sample
+
+    body = WaterBody(field_sea())
+    grid = body.foam_grid_at(0.5)
+    assert grid.segments > body.radial.segments and grid.outer_radius == 20.0
+    coverage, fresh = body.foam_state(0.5)
+    assert coverage.shape == (len(grid.points),) and np.all(fresh <= coverage + ROUNDOFF)
+    x, y = grid.points.T
+    np.testing.assert_allclose(polar_grid_sample(grid, fresh, x, y, -1.0), fresh, atol=ROUNDOFF)
+    # beyond the last ring: the far value
+    assert polar_grid_sample(grid, fresh, np.array([grid.center[0] + 25.0]), np.array([grid.center[1]]), -1.0)[0] == -1.0
+    # the vertices take the grid's foam; the frame carries it for the renderer
+    geometry = body.frame(0.5)
+    assert geometry.foam is not None and geometry.shading.foam is not None
+    assert geometry.shading.foam.fresh.size == len(grid.points)

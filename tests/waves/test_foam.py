@@ -204,3 +204,28 @@ def test_a_near_calm_sea_with_foam_has_finite_fields_everywhere():
     geometry = body.frame(0.5)
     assert geometry.non_finite() == {}
     assert geometry.foam is not None and float(np.max(geometry.foam)) == 0.0
+
+
+def test_lace_tile_is_uniform_periodic_and_drawn_out_along_its_direction():
+    import math
+
+    from oceanrender.waves.foam import lace_tile_Perlin1985
+
+    tile = lace_tile_Perlin1985(8.0, 256, 0.8, 3.0, math.radians(30.0), 1)
+    assert tile.shape == (256, 256) and tile.dtype == np.float32
+    # rank-mapped: uniform on [0, 1) exactly (to the half-texel offset)
+    np.testing.assert_allclose(np.quantile(tile, [0.1, 0.5, 0.9]), [0.1, 0.5, 0.9], atol=1e-3)
+    # foam drawn where tile < B covers the fraction B
+    for cover in (0.05, 0.3, 0.8):
+        assert np.mean(tile < cover) == pytest.approx(cover, abs=1e-3)
+    # periodic: the jump across the tile's edge is like a step inside it (not a seam)
+    inside = np.mean(np.abs(np.diff(tile, axis=1)))
+    seam = np.mean(np.abs(tile[:, 0] - tile[:, -1]))
+    assert seam < 1.5 * inside
+    # elongated along 30°: the field changes more slowly along it than across it
+    step = 3  # texels
+    along = np.mean(np.abs(tile - np.roll(np.roll(tile, -round(step * math.cos(math.radians(30))), 1),
+                                          -round(step * math.sin(math.radians(30))), 0)))
+    across = np.mean(np.abs(tile - np.roll(np.roll(tile, round(step * math.sin(math.radians(30))), 1),
+                                           -round(step * math.cos(math.radians(30))), 0)))
+    assert along < 0.7 * across

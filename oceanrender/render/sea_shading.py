@@ -1,0 +1,513 @@
+"""Shading every water hit from the sea's own fields: normals, roughness and foam to the pixel.
+
+The water body's mesh carries the displacement (silhouettes, horizon, parallax),
+but its vertices are centimetres (near the camera) to metres (40 m away) apart,
+while the cascades resolve waves down to 2.7 cm. Here every ray–water
+intersection is shaded from the cascades themselves
+(:class:`~oceanrender.surface.frame.ShadingFields`), in one code path for the
+CPU (``llvm``) and GPU (``cuda``) variants (and ``scalar``):
+
+1. **Rest position.** The hit's texture coordinates: the mesh's vertices carry
+   their rest positions (x₀, y₀), so the barycentric interpolation Mitsuba
+   does is the preimage of the hit under the piecewise-linear displacement the
+   mesh carries — the choppy displacement inverted exactly for the surface
+   that is rendered.
+2. **Footprint.** w = d θ_px / √|cos θ| with d the distance from the camera,
+   θ_px the angle of a pixel and θ the angle between the ray and the geometric
+   normal: the side of a square with the area of the pixel's elliptical
+   footprint on the surface (its width d θ_px across the view, d θ_px / cos θ
+   along it). Secondary rays use the same distance to the camera (the pixel's
+   cone where the path meets the surface again: a lower bound of their
+   footprint). The shading spacing is Δ = w/2, so waves are whole at
+   λ ≥ 4w (two pixels per half wave), fade out around λ = 2w (the pixel's
+   Nyquist wavelength) and are gone at λ ≤ w (:mod:`oceanrender.waves.lod`).
+3. **Normal.** Per cascade, levels ⌊s⌋ and ⌊s⌋ + 1 of s = log₂(k_top / k_f),
+   k_f = π/(2Δ), bilinearly at the rest position (periodic), weighted
+   (1 − f, f): the slopes ∂η/∂x₀, ∂η/∂y₀ and the displacement gradient, from
+   which the normal of the displaced surface
+   n ∝ (J_xy s_y − J_yy s_x, J_xy s_x − J_xx s_y, det J) (Tessendorf 2001, §4.3;
+   the normal of the map (x₀, y₀) ↦ (x₀ + λD_x, y₀ + λD_y, η)).
+4. **Roughness.** Beckmann α(Δ) = √(σ²_total − σ²_resolved(Δ)), tabulated per
+   frame over Δ (:attr:`ShadingFields.alpha`): what the footprint does not
+   resolve stays in the BSDF, so each pixel keeps the spectrum's whole slope
+   variance (Bruneton, Neyret & Holzschuch 2010, Eq. 4).
+
+The surface BSDF (``roughdielectric``, blended with foam) is wrapped by
+:class:`SeaSurfaceBSDF`, which gives it the shading frame of (3) — as
+Mitsuba's ``normalmap`` does, with the normal in world space — and reads α of
+(4) through the texture :class:`SeaRoughness`. Hits on the body's skirt and
+bottom (geometric normal not upward) keep the vertex shading.
+
+References
+----------
+.. [1] J. Tessendorf, "Simulating ocean water," SIGGRAPH 2001 course notes
+   (the normal of the choppy surface).
+.. [2] E. Bruneton, F. Neyret and N. Holzschuch, "Real-time realistic ocean
+   lighting using seamless transitions from geometry to BRDF," Computer
+   Graphics Forum 29(2), 487–496, 2010 (the slope budget).
+.. [3] L. Williams, "Pyramidal parametrics," SIGGRAPH 1983 (level from footprint).
+.. [4] Mitsuba 3.9.1 sources, ``src/bsdfs/normalmap.cpp`` (the perturbed shading frame).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["SHADING_SPACING_PER_FOOTPRINT", "MIN_COSINE", "pixel_angle", "SeaShading"]
+
+#: Shading spacing Δ per footprint w [-]: waves fade out around λ = 4Δ = 2w, the pixel's Nyquist wavelength.
+SHADING_SPACING_PER_FOOTPRINT = 0.5
+
+#: Exponent e of the footprint's elongation 1/|cos θ|^e [-]: 0, the footprint is the pixel's width across the
+#: view (its minor axis); ½, the side of a square of the pixel's elliptical area on the surface.
+ELONGATION = 0.5
+
+#: Smallest |cos θ| the footprint's elongation uses [-]: 1/√0.02 ≈ 7 at grazing angles (θ > 88.9°).
+MIN_COSINE = 0.02
+
+#: Smallest det J the normal uses [-]: a folded crest (J ≤ 0) keeps a steep normal, not an inverted one.
+MIN_JACOBIAN = 0.05
+
+#: Width ε of the lace's edge, in the tile's uniform value [-]: foam fades in over B ∈ (L − ε/2, L + ε/2).
+LACE_EDGE = 0.1
+
+#: Geometric normals with n_z below this are the body's skirt and bottom: vertex shading there [-].
+TOP_NORMAL_Z = 0.1
+
+
+def pixel_angle(fov_deg: float, width: int) -> float:
+    """Angle subtended by one pixel at the image centre [rad]: 2 tan(fov/2) / width (fov horizontal)."""
+    return 2.0 * math.tan(math.radians(float(fov_deg)) / 2.0) / int(width)
+
+
+def level_tables(cascades) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Flat field buffer and per-level (offset, resolution, spacing) of :class:`ShadingFields` cascades.
+
+    Level j of cascade c is entry ``c·M + j`` of the tables (M the largest level count);
+    entries of empty levels have resolution 0 (their fields are zero).
+    """
+    from ..surface.frame import SHADING_CHANNELS  # noqa: PLC0415
+
+    width = max(c.level_count for c in cascades)
+    offsets = np.zeros(len(cascades) * width, np.uint32)
+    sizes = np.zeros(len(cascades) * width, np.uint32)
+    spacings = np.ones(len(cascades) * width, np.float32)
+    chunks, start = [], 0
+    for c, cascade in enumerate(cascades):
+        for j, level in enumerate(cascade.levels):
+            n = level.shape[0]
+            offsets[c * width + j], sizes[c * width + j] = start, n
+            spacings[c * width + j] = cascade.patch_size / n
+            chunks.append(np.ascontiguousarray(level, np.float32).reshape(-1))
+            start += n * n * SHADING_CHANNELS
+    if start >= 2**32:
+        raise ValueError("the shading fields exceed 2³² values")
+    return np.concatenate(chunks), offsets, sizes, spacings
+
+
+class SeaShading:
+    """The sea's shading fields on the device and the camera's footprint model, shared by the water's plugins.
+
+    Build it with the first frame's fields (their layout — cascades, level sizes — is then
+    fixed); :meth:`update` replaces the values per frame and :meth:`set_camera` the
+    footprint's origin, both without recompiling (opaque kernel parameters).
+    """
+
+    def __init__(self, fields, camera_position, pixel_angle_rad: float):
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.layout = tuple((c.patch_size, c.band_top, tuple(level.shape[0] for level in c.levels))
+                            for c in fields.cascades)
+        self.width = max(c.level_count for c in fields.cascades)
+        self.band_tops = [c.band_top for c in fields.cascades]
+        self.counts = [c.level_count for c in fields.cascades]
+        self.patch_sizes = [c.patch_size for c in fields.cascades]
+        _, offsets, sizes, spacings = level_tables(fields.cascades)
+        self.offsets, self.sizes, self.spacings = mi.UInt32(offsets), mi.UInt32(sizes), mi.Float(spacings)
+        self.log_spacing_0 = float(np.log(fields.spacing[0]))
+        self.log_spacing_step = float(np.log(fields.spacing[1] / fields.spacing[0]))
+        self.table_size = int(fields.spacing.size)
+        self.camera = mi.Point3f(0.0, 0.0, 0.0)
+        self.pixel_angle = mi.Float(float(pixel_angle_rad))
+        dr.make_opaque(self.pixel_angle)
+        self.update(fields)
+        self.set_camera(camera_position)
+
+    def update(self, fields) -> None:
+        """Load a frame's :class:`~oceanrender.surface.frame.ShadingFields` (same layout as the first)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        layout = tuple((c.patch_size, c.band_top, tuple(level.shape[0] for level in c.levels))
+                       for c in fields.cascades)
+        if layout != self.layout:
+            raise ValueError("a frame's shading fields must keep the first frame's cascades and levels")
+        values = level_tables(fields.cascades)[0]
+        spacing = np.asarray(fields.spacing, float)
+        if not np.allclose(np.diff(np.log(spacing)), self.log_spacing_step) or spacing.size != self.table_size:
+            raise ValueError("the α table must keep the first frame's log-spaced shading spacings")
+        self.values = mi.Float(values)
+        self.alpha = mi.Float(np.asarray(fields.alpha, np.float32))
+        self.origin = mi.Point2f(float(fields.origin[0]), float(fields.origin[1]))
+        dr.make_opaque(self.values, self.alpha, self.origin)
+        foam = fields.foam
+        if (foam is None) != (getattr(self, "foam_layout", None) is None) and hasattr(self, "foam_layout"):
+            raise ValueError("a frame's shading fields must keep the first frame's foam grid")
+        self.foam_layout = None if foam is None else (foam.rings, foam.segments, foam.lace.shape)
+        if foam is not None:
+            self.foam_rings, self.foam_segments = int(foam.rings), int(foam.segments)
+            self.lace_n = int(foam.lace.shape[0])
+            self.foam_fresh = mi.Float(np.asarray(foam.fresh, np.float32))
+            self.lace = mi.Float(np.ascontiguousarray(foam.lace, np.float32).ravel())
+            # (centre x, centre y, inner radius, ln ratio per ring, outer radius, outside B, lace size)
+            self.foam_params = [mi.Float(float(v)) for v in (
+                foam.center[0], foam.center[1], foam.inner_radius,
+                math.log(foam.outer_radius / foam.inner_radius) / (foam.rings - 1), foam.outer_radius,
+                foam.outside, foam.lace_size)]
+            dr.make_opaque(self.foam_fresh, self.lace, *self.foam_params)
+
+    def set_pixel_angle(self, value: float) -> None:
+        """The angle of a pixel [rad] (:func:`pixel_angle`), after a change of field of view."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.pixel_angle = mi.Float(float(value))
+        dr.make_opaque(self.pixel_angle)
+
+    def set_camera(self, position) -> None:
+        """Where the footprints are measured from: the camera's pinhole [m]."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.camera = mi.Point3f(*(float(v) for v in position))
+        dr.make_opaque(self.camera)
+
+    # ---- per-hit evaluation (drjit, traced into the render kernel)
+
+    def on_top(self, si):
+        """Hits on the sea's upper surface (geometric normal upward): the ones shaded from the fields."""
+        return si.n.z > TOP_NORMAL_Z
+
+    def spacing(self, si):
+        """Shading spacing Δ [m] of a hit: w/2, w = d θ_px / √max(|cos θ|, :data:`MIN_COSINE`)."""
+        import drjit as dr  # noqa: PLC0415
+
+        to_camera = self.camera - si.p
+        distance = dr.norm(to_camera)
+        footprint = distance * self.pixel_angle
+        if ELONGATION > 0:
+            cosine = dr.maximum(dr.abs(dr.dot(si.to_world(si.wi), si.n)), MIN_COSINE)
+            footprint = footprint * dr.power(cosine, -ELONGATION)
+        return SHADING_SPACING_PER_FOOTPRINT * dr.maximum(footprint, 1e-6)
+
+    def alpha_at(self, spacing):
+        """Beckmann α(Δ) [-], linear in log Δ between the table's entries (clamped at its ends)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        u = (dr.log(spacing) - self.log_spacing_0) / self.log_spacing_step
+        u = dr.clip(u, 0.0, self.table_size - 1.000001)
+        i = mi.UInt32(dr.floor(u))
+        f = u - dr.floor(u)
+        a0 = dr.gather(mi.Float, self.alpha, i)
+        a1 = dr.gather(mi.Float, self.alpha, i + 1)
+        return dr.lerp(a0, a1, f)
+
+    def _level(self, entry, x, y, weight, active):
+        """weight × the five fields of level table entry ``entry`` bilinearly at rest (x, y), periodic."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        n = dr.gather(mi.UInt32, self.sizes, entry, active)
+        active = active & (n > 0) & (weight > 0)
+        offset = dr.gather(mi.UInt32, self.offsets, entry, active)
+        h = dr.gather(mi.Float, self.spacings, entry, active)
+        n_f = mi.Float(dr.maximum(n, 1))
+        patch = n_f * h
+        u = (x + 0.5 * patch) / h
+        v = (y + 0.5 * patch) / h
+        u = u - n_f * dr.floor(u / n_f)  # periodic: u in [0, N)
+        v = v - n_f * dr.floor(v / n_f)
+        i0, j0 = dr.floor(u), dr.floor(v)
+        fx, fy = u - i0, v - j0
+        i0 = dr.minimum(mi.UInt32(i0), dr.maximum(n, 1) - 1)
+        j0 = dr.minimum(mi.UInt32(j0), dr.maximum(n, 1) - 1)
+        i1 = dr.select(i0 + 1 >= n, 0, i0 + 1)
+        j1 = dr.select(j0 + 1 >= n, 0, j0 + 1)
+        out = [mi.Float(0.0) for _ in range(5)]
+        for (jj, ii, w) in ((j0, i0, (1 - fx) * (1 - fy)), (j0, i1, fx * (1 - fy)),
+                            (j1, i0, (1 - fx) * fy), (j1, i1, fx * fy)):
+            base = offset + (jj * n + ii) * 5
+            for k in range(5):
+                out[k] += w * dr.gather(mi.Float, self.values, base + k, active)
+        return [dr.select(active, weight * o, 0.0) for o in out]
+
+    def fields_at(self, rest, spacing, active):
+        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m]."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        total = [mi.Float(0.0) for _ in range(5)]
+        for c, (top, count) in enumerate(zip(self.band_tops, self.counts)):
+            k_f = math.pi / (2.0 * spacing)
+            s = dr.clip(dr.log2(top / k_f), 0.0, count - 1.0)
+            low = dr.floor(s)
+            frac = s - low
+            entry = mi.UInt32(c * self.width) + mi.UInt32(low)
+            for e, w in ((entry, 1.0 - frac), (entry + 1, frac)):
+                part = self._level(e, rest.x, rest.y, w, active & (mi.UInt32(low) + (e - entry) < count))
+                total = [a + b for a, b in zip(total, part)]
+        return total
+
+    def foam_at(self, si, active=True):
+        """Fresh-foam weight [-] of a hit: B of the foam grid at its rest position, drawn as lace.
+
+        B bilinear in (ring, angle) on the polar grid (between the centre and the first
+        ring linear in r; beyond the last ring the far mean), as
+        :func:`oceanrender.surface.open_sea.polar_grid_sample`; then the weight
+        clip((B − L)/ε + ½, 0, 1) with L the lace tile (uniform on [0, 1)) at the rest
+        position and ε = :data:`LACE_EDGE`: foam covers the fraction B of the surface on
+        average, a full sheet where B → 1 and a lace of thin lines where B is small.
+        """
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        cx, cy, r_in, log_q, r_out, outside, lace_size = self.foam_params
+        rest = mi.Point2f(si.uv.x, si.uv.y)  # relative to the origin, like the grid's centre
+        dx, dy = rest.x - cx, rest.y - cy
+        r = dr.sqrt(dx * dx + dy * dy)
+        rings, segments = self.foam_rings, self.foam_segments
+        j = dr.log(dr.maximum(r, 1e-9) / r_in) / log_q
+        a = dr.atan2(dy, dx) * (segments / (2 * math.pi))
+        a = a - segments * dr.floor(a / segments)
+        i0f = dr.floor(a)
+        fa = a - i0f
+        i0 = dr.minimum(mi.UInt32(i0f), segments - 1)
+        i1 = dr.select(i0 + 1 >= segments, 0, i0 + 1)
+        j0f = dr.clip(dr.floor(j), 0.0, rings - 1.0)
+        fj = dr.clip(j - j0f, 0.0, 1.0)
+        j0 = mi.UInt32(j0f)
+        j1 = dr.minimum(j0 + 1, rings - 1)
+
+        def value(jj, ii):
+            return dr.gather(mi.Float, self.foam_fresh, 1 + jj * segments + ii, active)
+
+        inner = dr.lerp(value(j0, i0), value(j0, i1), fa)
+        outer = dr.lerp(value(j1, i0), value(j1, i1), fa)
+        fresh = dr.lerp(inner, outer, fj)
+        centre = dr.gather(mi.Float, self.foam_fresh, mi.UInt32(0), active)
+        fresh = dr.select(r < r_in, dr.lerp(centre, fresh, r / r_in), fresh)
+        fresh = dr.select(r > r_out * (1 + 1e-6), outside, fresh)
+        # the lace tile, bilinear and periodic at the rest position (texel centres at (i + ½) size/M)
+        n = self.lace_n
+        u = (rest.x + self.origin.x) * (n / lace_size) - 0.5
+        v = (rest.y + self.origin.y) * (n / lace_size) - 0.5
+        u = u - n * dr.floor(u / n)
+        v = v - n * dr.floor(v / n)
+        li, lj = dr.floor(u), dr.floor(v)
+        fu, fv = u - li, v - lj
+        li0 = dr.minimum(mi.UInt32(li), n - 1)
+        lj0 = dr.minimum(mi.UInt32(lj), n - 1)
+        li1 = dr.select(li0 + 1 >= n, 0, li0 + 1)
+        lj1 = dr.select(lj0 + 1 >= n, 0, lj0 + 1)
+
+        def lace(jj, ii):
+            return dr.gather(mi.Float, self.lace, jj * n + ii, active)
+
+        tile = dr.lerp(dr.lerp(lace(lj0, li0), lace(lj0, li1), fu), dr.lerp(lace(lj1, li0), lace(lj1, li1), fu), fv)
+        weight = dr.clip((fresh - tile) / LACE_EDGE + 0.5, 0.0, 1.0)
+        return dr.select(self.on_top(si), weight, 0.0)
+
+    def normal(self, si, active=True):
+        """(unit normal [world], Beckmann α [-], on_top) at a hit from the fields at its footprint."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        top = mi.Bool(active) & self.on_top(si)
+        spacing = self.spacing(si)
+        rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
+        sx, sy, xx, yy, xy = self.fields_at(rest, spacing, top)
+        jxx, jyy = 1.0 + xx, 1.0 + yy
+        det = dr.maximum(jxx * jyy - xy * xy, MIN_JACOBIAN)
+        n = dr.normalize(mi.Vector3f(xy * sy - jyy * sx, xy * sx - jxx * sy, det))
+        return n, self.alpha_at(spacing), top
+
+
+#: Names of the plugins in Mitsuba's registry.
+SURFACE_PLUGIN = "oceanrender_sea_surface"
+ROUGHNESS_PLUGIN = "oceanrender_sea_roughness"
+
+_CLASSES: dict[tuple[str, str], type] = {}
+
+
+def _classes() -> tuple[type, type, type]:
+    """(:class:`SeaSurfaceBSDF`, :class:`SeaRoughness`, :class:`SeaFoam`) of the active variant."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    key = (mi.variant(), "classes")
+    if key not in _CLASSES:
+        _CLASSES[key] = _define_classes()
+    return _CLASSES[key]
+
+
+def _define_classes() -> tuple[type, type, type]:
+    import drjit as dr  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+
+    class SeaRoughness(mi.Texture):
+        """Beckmann α [-] of a water hit: the slopes its footprint does not resolve (:meth:`SeaShading.alpha_at`).
+
+        Off the upper surface (skirt, bottom) the texture ``fallback`` (the vertex α or a constant).
+        """
+
+        def __init__(self, props):
+            super().__init__(props)
+            self.shading = None
+            self.fallback = None
+
+        def attach(self, shading: SeaShading, fallback) -> "SeaRoughness":
+            self.shading, self.fallback = shading, fallback
+            return self
+
+        def eval_1(self, si, active=True):
+            alpha = self.shading.alpha_at(self.shading.spacing(si))
+            return dr.select(self.shading.on_top(si), alpha, self.fallback.eval_1(si, active))
+
+        def eval(self, si, active=True):
+            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
+
+        def mean(self):
+            return float(np.mean(np.asarray(self.shading.alpha)))
+
+        def to_string(self):
+            return "SeaRoughness[]"
+
+    class SeaFoam(mi.Texture):
+        """Fresh-foam weight [-] of a water hit from the foam's field-resolution grid (:meth:`SeaShading.foam_at`)."""
+
+        def __init__(self, props):
+            super().__init__(props)
+            self.shading = None
+
+        def attach(self, shading: SeaShading) -> "SeaFoam":
+            self.shading = shading
+            return self
+
+        def eval_1(self, si, active=True):
+            return self.shading.foam_at(si, active)
+
+        def eval(self, si, active=True):
+            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
+
+        def mean(self):
+            return float(np.mean(np.asarray(self.shading.foam_fresh)))
+
+        def to_string(self):
+            return "SeaFoam[]"
+
+    class SeaSurfaceBSDF(mi.BSDF):
+        """The water surface's BSDF in the shading frame of the sea's fields at each hit.
+
+        Wraps ``nested`` (the surface's ``roughdielectric``, or its ``blendbsdf`` with foam)
+        as Mitsuba's ``normalmap`` does, with the normal of :meth:`SeaShading.normal` in
+        world space. A sampled or evaluated direction must lie on the side of the
+        *geometric* surface that its lobe implies (reflection: the side of ω_i;
+        transmission: the other), else the value is 0: light cannot leak through the
+        mesh (the energy of such directions, a few per cent at grazing views, is lost,
+        as with any shading normal; docs/pixel_detail.md measures it).
+        """
+
+        #: The split integrator treats it as the dielectric it wraps (:mod:`.integrator`).
+        wraps_dielectric = True
+
+        def __init__(self, props):
+            super().__init__(props)
+            self.nested = None
+            self.shading = None
+
+        def attach(self, nested, shading: SeaShading) -> "SeaSurfaceBSDF":
+            self.nested, self.shading = nested, shading
+            self.m_flags = nested.flags()
+            self.m_components = [nested.flags(i) for i in range(nested.component_count())]
+            return self
+
+        def _perturbed(self, si, active):
+            n, _, top = self.shading.normal(si, active)
+            perturbed = mi.SurfaceInteraction3f(si)
+            frame = mi.Frame3f(n)
+            perturbed.sh_frame = mi.Frame3f(dr.select(top, frame.s, si.sh_frame.s),
+                                            dr.select(top, frame.t, si.sh_frame.t),
+                                            dr.select(top, frame.n, si.sh_frame.n))
+            perturbed.wi = perturbed.to_local(si.to_world(si.wi))
+            return perturbed
+
+        def sample(self, ctx, si, sample1, sample2, active=True):
+            perturbed = self._perturbed(si, active)
+            bs, weight = self.nested.sample(ctx, perturbed, sample1, sample2, active)
+            wo_world = perturbed.to_world(bs.wo)
+            bs.wo = si.to_local(wo_world)
+            return bs, dr.select(self._consistent(si, perturbed, wo_world), weight, 0.0)
+
+        def eval(self, ctx, si, wo, active=True):
+            perturbed = self._perturbed(si, active)
+            wo_world = si.to_world(wo)
+            value = self.nested.eval(ctx, perturbed, perturbed.to_local(wo_world), active)
+            return dr.select(self._consistent(si, perturbed, wo_world), value, 0.0)
+
+        def pdf(self, ctx, si, wo, active=True):
+            perturbed = self._perturbed(si, active)
+            wo_world = si.to_world(wo)
+            value = self.nested.pdf(ctx, perturbed, perturbed.to_local(wo_world), active)
+            return dr.select(self._consistent(si, perturbed, wo_world), value, 0.0)
+
+        def eval_pdf(self, ctx, si, wo, active=True):
+            perturbed = self._perturbed(si, active)
+            wo_world = si.to_world(wo)
+            value, pdf = self.nested.eval_pdf(ctx, perturbed, perturbed.to_local(wo_world), active)
+            ok = self._consistent(si, perturbed, wo_world)
+            return dr.select(ok, value, 0.0), dr.select(ok, pdf, 0.0)
+
+        @staticmethod
+        def _consistent(si, perturbed, wo_world):
+            """Reflection (same side of the shading frame) must also be reflection about the geometric
+            surface, and transmission transmission."""
+            geometric = dr.dot(si.to_world(si.wi), si.n) * dr.dot(wo_world, si.n)
+            shading = mi.Frame3f.cos_theta(perturbed.wi) * dr.dot(wo_world, perturbed.sh_frame.n)
+            return geometric * shading > 0
+
+        def eval_diffuse_reflectance(self, si, active=True):
+            return self.nested.eval_diffuse_reflectance(si, active)
+
+        def traverse(self, callback):
+            pass
+
+        def to_string(self):
+            return f"SeaSurfaceBSDF[nested={self.nested}]"
+
+    return SeaSurfaceBSDF, SeaRoughness, SeaFoam
+
+
+def sea_foam(shading: SeaShading):
+    """The foam weight texture of the surface's ``blendbsdf``: :class:`SeaFoam`."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    return _classes()[2](mi.Properties()).attach(shading)
+
+
+def sea_roughness(shading: SeaShading, fallback: dict):
+    """The α texture of the surface BSDF: :class:`SeaRoughness` over ``fallback`` (a texture dict)."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    roughness_class = _classes()[1]
+    return roughness_class(mi.Properties()).attach(shading, mi.load_dict(fallback))
+
+
+def sea_surface(nested: dict, shading: SeaShading):
+    """The water surface's BSDF ``nested`` (a dict, objects allowed inside) shaded from the sea's fields."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    surface_class = _classes()[0]
+    return surface_class(mi.Properties()).attach(mi.load_dict(nested), shading)
