@@ -48,13 +48,19 @@ CASES = {
     "default_4": ("scenes/open_ocean.toml", 4.0, (832, 464, 256, 128)),
     "glitter_4": ("scenes/glitter_low_sun.toml", 4.0, (512, 400, 256, 128)),
     "glitter_12": ("scenes/glitter_low_sun.toml", 12.0, (512, 400, 256, 128)),
+    # the default scene from other heights (camera z [m] after the "@"): crops for the eye
+    "default@2": ("scenes/open_ocean.toml", None, (832, 464, 256, 128)),
+    "default@30": ("scenes/open_ocean.toml", None, (832, 464, 256, 128)),
 }
+
+#: Most vertices of the brute-force patch (memory): beyond, its spacing grows (and is reported).
+MAX_PATCH_VERTICES = 4_000_000
 
 WIDTH, HEIGHT = 1280, 720
 
 
-def scene_for(path: str, wind: float | None):
-    """The case's scene at 1280×720, foam off, one frame."""
+def scene_for(path: str, wind: float | None, height: float | None = None):
+    """The case's scene at 1280×720, foam off, one frame (camera ``height`` [m] above the sea if given)."""
     from oceanrender.scene.settings import scene_from_dict  # noqa: PLC0415
 
     data = tomllib.loads((ROOT / path).read_text())
@@ -63,6 +69,8 @@ def scene_for(path: str, wind: float | None):
     data["foam"] = {"enabled": False}
     if wind is not None:
         data["ocean"]["wind_speed"] = wind
+    if height is not None:
+        data["camera"]["position"][2] = height
     return scene_from_dict(data, path)
 
 
@@ -90,7 +98,8 @@ def brute_force_patch(body, t: float, scene, crop, sigma_eta: float):
     from oceanrender.surface.frame import FrameGeometry  # noqa: PLC0415
 
     angle = pixel_angle(scene.camera.fov, WIDTH)
-    heights = 3.5 * sigma_eta  # the sea's surface lies between ±3.5 σ_η (but for 1 point in 10⁴)
+    # the sea's surface lies between ±3.5 σ_η (but for 1 point in 10⁴); below the camera
+    heights = min(3.5 * sigma_eta, 0.9 * scene.camera.position[2])
     xs, ys, spacing_x, spacing_y = [], [], [], []
     for o, d in crop_rays(scene, crop):
         for z in (-heights, 0.0, heights):
@@ -106,6 +115,8 @@ def brute_force_patch(body, t: float, scene, crop, sigma_eta: float):
     y0, y1 = min(ys) - margin, max(ys) + margin
     # NOTE: the camera looks along ±y in the cases here, so x is across the view and y along it.
     sx, sy = min(spacing_x), min(spacing_y)
+    grow = math.sqrt(max(1.0, (x1 - x0) / sx * (y1 - y0) / sy / MAX_PATCH_VERTICES))
+    sx, sy = sx * grow, sy * grow
     nx, ny = int(math.ceil((x1 - x0) / sx)) + 1, int(math.ceil((y1 - y0) / sy)) + 1
     gx, gy = np.meshgrid(np.linspace(x0, x1, nx), np.linspace(y0, y1, ny))
     surface = body.sea.sample(gx.ravel(), gy.ravel(), t, None)
@@ -185,7 +196,8 @@ def main() -> None:
     out.mkdir(parents=True, exist_ok=True)
     for case in args.cases.split(","):
         path, wind, crop = CASES[case]
-        scene = scene_for(path, wind)
+        height = float(case.split("@")[1]) if "@" in case else None
+        scene = scene_for(path, wind, height)
         variant = activate_variant(scene.render.variant).variant
         tic = time.perf_counter()
         seq = Sequence(scene, variant, spp=args.spp)
@@ -203,22 +215,27 @@ def main() -> None:
         for mode, (faces, geo) in builds.items():
             renderer = WaterRenderer.build(scene, seq.iops, faces, geo, **common)
             start = time.perf_counter()
-            renders[mode] = [renderer.render_xyz(args.spp, seed)[0] for seed in (1, 2)]
-            renders[mode + "_seconds"] = (time.perf_counter() - start) / 2
+            seeds = (1, 2, 3, 4) if mode == "brute" else (1, 2)  # brute: two pairs, the estimate's own scatter
+            renders[mode] = [renderer.render_xyz(args.spp, seed)[0] for seed in seeds]
+            renders[mode + "_seconds"] = (time.perf_counter() - start) / len(seeds)
             del renderer
         white = np.asarray(seq.white_xyz, float)
         reference = renders["brute"]
         freq, p_ref = radial_spectrum(reference[0][..., 1], reference[1][..., 1])
-        lab_ref = mean_lab(0.5 * (reference[0] + reference[1]), white)
+        _, p_ref2 = radial_spectrum(reference[2][..., 1], reference[3][..., 1])
+        floor = p_ref2 / p_ref  # the same reference from other seeds: how far the estimate itself scatters
+        lab_ref = mean_lab(np.mean(reference, axis=0), white)
         threshold = white[1]  # the white plane's luminance [cd m⁻²]
-        count_ref = np.mean([np.count_nonzero(r[..., 1] > threshold) for r in reference])
-        adaptation = adaptation_luminance_log_average(0.5 * (reference[0][..., 1] + reference[1][..., 1]))
+        count_ref = np.mean([np.count_nonzero(r[..., 1] > threshold) for r in reference[:2]])
+        adaptation = adaptation_luminance_log_average(np.mean(reference, axis=0)[..., 1])
         result = {"case": case, "scene": path, "wind_speed": wind or scene.ocean.wind_speed, "crop": crop,
                   "spp": args.spp, "setup_s": time.perf_counter() - tic, **info,
                   "glitter_threshold_cd_m2": threshold, "glitter_brute": count_ref,
-                  "frequency_cy_px": freq.round(4).tolist(), "power_brute": p_ref.tolist()}
+                  "frequency_cy_px": freq.round(4).tolist(), "power_brute": p_ref.tolist(),
+                  "power_ratio_brute_seeds": floor.round(3).tolist(),
+                  "power_worst_brute_seeds": float(np.max(np.abs(floor - 1.0)))}
         for mode in ("fields", "vertex", "brute"):
-            xyz = 0.5 * (renders[mode][0] + renders[mode][1])
+            xyz = np.mean(renders[mode], axis=0)
             rgb = seq.vision.apply(xyz, white, adaptation)
             iio.imwrite(out / f"{case}_{mode}.png", encode_sRGB_8bit(np.clip(rgb, 0, 1)))
             result[f"seconds_{mode}"] = renders[mode + "_seconds"]

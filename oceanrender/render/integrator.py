@@ -394,6 +394,11 @@ def _define_class() -> type:
             else:
                 split = bool(split) and any(bsdf is b for b in bsdfs)
 
+            if jit and len(bsdfs) == 1 and hasattr(bsdfs[0], "prepared"):
+                # The sea shaded from its fields (:mod:`.sea_shading`): every split lane is on it, so its
+                # methods are called directly, with the hit's shading frame evaluated once, not per call.
+                bsdf = bsdfs[0].prepared(si, split)
+
             if self.lobes == "transmission":
                 L_t = self._transmitted(scene, sampler, si, bsdf, split, bsdfs)
                 return dr.select(split, L_t, 0.0), mi.Bool(active), []

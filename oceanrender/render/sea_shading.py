@@ -73,6 +73,10 @@ MIN_JACOBIAN = 0.05
 #: Width ε of the lace's edge, in the tile's uniform value [-]: foam fades in over B ∈ (L − ε/2, L + ε/2).
 LACE_EDGE = 0.1
 
+#: Largest visible-area weight of a hit (:meth:`SeaShading.shading_frame`) [-]: the ratio exceeds it only
+#: where the ray grazes the mesh's triangle (|ω_i·N_g| → 0), a vanishing share of the pixel.
+MAX_AREA_WEIGHT = 8.0
+
 #: Geometric normals with n_z below this are the body's skirt and bottom: vertex shading there [-].
 TOP_NORMAL_Z = 0.1
 
@@ -332,8 +336,45 @@ class SeaShading:
         sx, sy, xx, yy, xy = self.fields_at(rest, spacing, top)
         jxx, jyy = 1.0 + xx, 1.0 + yy
         det = dr.maximum(jxx * jyy - xy * xy, MIN_JACOBIAN)
-        n = dr.normalize(mi.Vector3f(xy * sy - jyy * sx, xy * sx - jxx * sy, det))
+        n = dr.normalize(self._area_normal(sx, sy, xx, yy, xy))
         return n, self.alpha_at(spacing), top
+
+    @staticmethod
+    def _area_normal(sx, sy, xx, yy, xy):
+        """∂p/∂x₀ × ∂p/∂y₀ of p = (x₀ + λD_x, y₀ + λD_y, η): the surface's vector area per unit rest area [-]."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        jxx, jyy = 1.0 + xx, 1.0 + yy
+        det = dr.maximum(jxx * jyy - xy * xy, MIN_JACOBIAN)
+        return mi.Vector3f(xy * sy - jyy * sx, xy * sx - jxx * sy, det)
+
+    def shading_frame(self, si, active=True):
+        """(unit normal [world], visible-area weight [-], on_top) of a hit: :meth:`normal` and the ratio of
+        the fields' projected area to the mesh's.
+
+        A ray meets the mesh with a density per unit rest area ∝ ω_i·N_g (N_g = ∂p/∂u × ∂p/∂v of
+        the triangle, the texture coordinates being rest positions), while the surface the fields
+        describe shows each rest element with its own projected area max(0, ω_i·N_s) (N_s of
+        :meth:`_area_normal`; facets turned away are hidden). The weight
+        w = max(0, ω_i·N_s) / ω_i·N_g (signs taken on the side the ray comes from) turns the
+        mesh's sampling into the fields' visible normals: its mean over a pixel is 1 where the two
+        surfaces share their long waves (same vector area, Heitz 2014, Eq. 2), facets facing the ray
+        count more and hidden ones not at all. Capped at :data:`MAX_AREA_WEIGHT`.
+        """
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        top = mi.Bool(active) & self.on_top(si)
+        spacing = self.spacing(si)
+        rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
+        area = self._area_normal(*self.fields_at(rest, spacing, top))
+        wi = si.to_world(si.wi)
+        mesh = dr.dot(wi, dr.cross(si.dp_du, si.dp_dv))
+        side = dr.select(mesh >= 0, 1.0, -1.0)
+        weight = dr.maximum(dr.dot(wi, area) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
+        weight = dr.select(top, dr.minimum(weight, MAX_AREA_WEIGHT), 1.0)
+        return dr.normalize(area), weight, top
 
 
 #: Names of the plugins in Mitsuba's registry.
@@ -412,12 +453,13 @@ def _define_classes() -> tuple[type, type, type]:
         """The water surface's BSDF in the shading frame of the sea's fields at each hit.
 
         Wraps ``nested`` (the surface's ``roughdielectric``, or its ``blendbsdf`` with foam)
-        as Mitsuba's ``normalmap`` does, with the normal of :meth:`SeaShading.normal` in
-        world space. A sampled or evaluated direction must lie on the side of the
-        *geometric* surface that its lobe implies (reflection: the side of ω_i;
-        transmission: the other), else the value is 0: light cannot leak through the
-        mesh (the energy of such directions, a few per cent at grazing views, is lost,
-        as with any shading normal; docs/pixel_detail.md measures it).
+        as Mitsuba's ``normalmap`` does, with the normal of :meth:`SeaShading.shading_frame` in
+        world space, and scales its values (not its densities) by that method's visible-area
+        weight, so the normals a pixel sees are the fields' visible ones. A sampled or
+        evaluated direction must lie on the side of the *geometric* surface that its lobe
+        implies (reflection: the side of ω_i; transmission: the other), else the value is 0:
+        light cannot leak through the mesh (a real surface would send such a ray into the
+        next wave; docs/pixel_detail.md measures what is lost).
         """
 
         #: The split integrator treats it as the dielectric it wraps (:mod:`.integrator`).
@@ -435,40 +477,54 @@ def _define_classes() -> tuple[type, type, type]:
             return self
 
         def _perturbed(self, si, active):
-            n, _, top = self.shading.normal(si, active)
+            n, weight, top = self.shading.shading_frame(si, active)
             perturbed = mi.SurfaceInteraction3f(si)
             frame = mi.Frame3f(n)
             perturbed.sh_frame = mi.Frame3f(dr.select(top, frame.s, si.sh_frame.s),
                                             dr.select(top, frame.t, si.sh_frame.t),
                                             dr.select(top, frame.n, si.sh_frame.n))
             perturbed.wi = perturbed.to_local(si.to_world(si.wi))
-            return perturbed
+            return perturbed, weight
 
-        def sample(self, ctx, si, sample1, sample2, active=True):
-            perturbed = self._perturbed(si, active)
+        def prepared(self, si, active=True):
+            """This BSDF at hit ``si`` with its shading frame evaluated once: an object with the
+            methods ``sample``, ``eval``, ``pdf``, ``eval_pdf`` of a BSDF at that hit (the
+            ``split`` integrator's camera hit calls four of them on the same hit)."""
+            return _Prepared(self, si, *self._perturbed(si, active))
+
+        def _sample(self, ctx, si, perturbed, area, sample1, sample2, active):
             bs, weight = self.nested.sample(ctx, perturbed, sample1, sample2, active)
             wo_world = perturbed.to_world(bs.wo)
             bs.wo = si.to_local(wo_world)
-            return bs, dr.select(self._consistent(si, perturbed, wo_world), weight, 0.0)
+            return bs, dr.select(self._consistent(si, perturbed, wo_world), weight * area, 0.0)
 
-        def eval(self, ctx, si, wo, active=True):
-            perturbed = self._perturbed(si, active)
+        def _eval(self, ctx, si, perturbed, area, wo, active):
             wo_world = si.to_world(wo)
             value = self.nested.eval(ctx, perturbed, perturbed.to_local(wo_world), active)
-            return dr.select(self._consistent(si, perturbed, wo_world), value, 0.0)
+            return dr.select(self._consistent(si, perturbed, wo_world), value * area, 0.0)
 
-        def pdf(self, ctx, si, wo, active=True):
-            perturbed = self._perturbed(si, active)
+        def _pdf(self, ctx, si, perturbed, wo, active):
             wo_world = si.to_world(wo)
             value = self.nested.pdf(ctx, perturbed, perturbed.to_local(wo_world), active)
             return dr.select(self._consistent(si, perturbed, wo_world), value, 0.0)
 
-        def eval_pdf(self, ctx, si, wo, active=True):
-            perturbed = self._perturbed(si, active)
+        def _eval_pdf(self, ctx, si, perturbed, area, wo, active):
             wo_world = si.to_world(wo)
             value, pdf = self.nested.eval_pdf(ctx, perturbed, perturbed.to_local(wo_world), active)
             ok = self._consistent(si, perturbed, wo_world)
-            return dr.select(ok, value, 0.0), dr.select(ok, pdf, 0.0)
+            return dr.select(ok, value * area, 0.0), dr.select(ok, pdf, 0.0)
+
+        def sample(self, ctx, si, sample1, sample2, active=True):
+            return self._sample(ctx, si, *self._perturbed(si, active), sample1, sample2, active)
+
+        def eval(self, ctx, si, wo, active=True):
+            return self._eval(ctx, si, *self._perturbed(si, active), wo, active)
+
+        def pdf(self, ctx, si, wo, active=True):
+            return self._pdf(ctx, si, self._perturbed(si, active)[0], wo, active)
+
+        def eval_pdf(self, ctx, si, wo, active=True):
+            return self._eval_pdf(ctx, si, *self._perturbed(si, active), wo, active)
 
         @staticmethod
         def _consistent(si, perturbed, wo_world):
@@ -486,6 +542,27 @@ def _define_classes() -> tuple[type, type, type]:
 
         def to_string(self):
             return f"SeaSurfaceBSDF[nested={self.nested}]"
+
+    class _Prepared:
+        """:meth:`SeaSurfaceBSDF.prepared`: the BSDF's methods at one hit, its shading frame computed once."""
+
+        def __init__(self, bsdf, si, perturbed, area):
+            self.bsdf, self.si, self.perturbed, self.area = bsdf, si, perturbed, area
+
+        def flags(self):
+            return self.bsdf.flags()
+
+        def sample(self, ctx, si, sample1, sample2, active=True):
+            return self.bsdf._sample(ctx, si, self.perturbed, self.area, sample1, sample2, active)
+
+        def eval(self, ctx, si, wo, active=True):
+            return self.bsdf._eval(ctx, si, self.perturbed, self.area, wo, active)
+
+        def pdf(self, ctx, si, wo, active=True):
+            return self.bsdf._pdf(ctx, si, self.perturbed, wo, active)
+
+        def eval_pdf(self, ctx, si, wo, active=True):
+            return self.bsdf._eval_pdf(ctx, si, self.perturbed, self.area, wo, active)
 
     return SeaSurfaceBSDF, SeaRoughness, SeaFoam
 
