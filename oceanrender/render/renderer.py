@@ -159,14 +159,15 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=No
 
 
 def field_shaded_surface(geometry: FrameGeometry, ior: float, roughness: float, foam_albedo: float | None,
-                         shading):
+                         shading, lace=None):
     """The water surface BSDF shaded from the sea's fields at every hit (:mod:`.sea_shading`).
 
     ``roughdielectric`` whose α is :class:`~.sea_shading.SeaRoughness` (the footprint's
     unresolved slopes; off the upper surface the vertex α, or ``roughness``), blended with
-    foam when ``foam_albedo`` is given, inside :class:`~.sea_shading.SeaSurfaceBSDF`.
+    foam when ``foam_albedo`` is given (the foam grid's, or the vertices' drawn as ``lace``, a
+    (tile, size [m]) pair), inside :class:`~.sea_shading.SeaSurfaceBSDF`.
     """
-    from .sea_shading import sea_foam, sea_roughness, sea_surface  # noqa: PLC0415
+    from .sea_shading import lace_foam, sea_foam, sea_roughness, sea_surface  # noqa: PLC0415
 
     fallback = ({"type": "mesh_attribute", "name": ROUGHNESS_ATTRIBUTE} if geometry.roughness is not None
                 else {"type": "uniform", "value": max(float(roughness), SMOOTH_ALPHA)})
@@ -176,6 +177,8 @@ def field_shaded_surface(geometry: FrameGeometry, ior: float, roughness: float, 
         surface = foamy_surface_bsdf(surface, foam_albedo)
         if getattr(shading, "foam_layout", None) is not None:  # the foam's field-resolution grid
             surface["weight"] = sea_foam(shading)
+        elif lace is not None:
+            surface["weight"] = lace_foam(surface["weight"], *lace)
     return sea_surface(surface, shading)
 
 
@@ -365,11 +368,16 @@ class WaterRenderer:
 
             shading = SeaShading(geometry.shading, settings.camera.position, pixel_angle(settings.camera.fov, width))
             bsdf = field_shaded_surface(geometry, water_ior(settings), roughness,
-                                        settings.foam.albedo if geometry.foam is not None else None, shading)
+                                        settings.foam.albedo if geometry.foam is not None else None, shading,
+                                        geometry.foam_lace if geometry.foam is not None else None)
         else:
             bsdf = water_surface_bsdf(water_ior(settings), roughness, per_vertex=geometry.roughness is not None)
             if geometry.foam is not None:
                 bsdf = foamy_surface_bsdf(bsdf, settings.foam.albedo)
+                if geometry.foam_lace is not None:  # the coast's cells: their foam drawn as lace
+                    from .sea_shading import lace_foam  # noqa: PLC0415
+
+                    bsdf["weight"] = lace_foam(bsdf["weight"], *geometry.foam_lace)
         medium = load_water_medium(water_medium(iops))
         mesh = water_mesh(faces, geometry, bsdf, medium)
         sun_sampling = {}

@@ -111,6 +111,31 @@ def level_tables(cascades) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarr
     return np.concatenate(chunks), offsets, sizes, spacings
 
 
+def lace_weight(fresh, x, y, lace, n: int, size, active=True):
+    """Foam weight [-] of fresh-foam coverage B = ``fresh`` drawn as lace at (x, y) [m]:
+    clip((B − L)/ε + ½, 0, 1), L the periodic lace tile (n × n texels over ``size`` m, uniform on [0, 1),
+    texel centres at (i + ½) size/n) bilinearly at (x, y), ε = :data:`LACE_EDGE`."""
+    import drjit as dr  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+
+    u = x * (n / size) - 0.5
+    v = y * (n / size) - 0.5
+    u = u - n * dr.floor(u / n)
+    v = v - n * dr.floor(v / n)
+    li, lj = dr.floor(u), dr.floor(v)
+    fu, fv = u - li, v - lj
+    li0 = dr.minimum(mi.UInt32(li), n - 1)
+    lj0 = dr.minimum(mi.UInt32(lj), n - 1)
+    li1 = dr.select(li0 + 1 >= n, 0, li0 + 1)
+    lj1 = dr.select(lj0 + 1 >= n, 0, lj0 + 1)
+
+    def texel(jj, ii):
+        return dr.gather(mi.Float, lace, jj * n + ii, active)
+
+    tile = dr.lerp(dr.lerp(texel(lj0, li0), texel(lj0, li1), fu), dr.lerp(texel(lj1, li0), texel(lj1, li1), fu), fv)
+    return dr.clip((fresh - tile) / LACE_EDGE + 0.5, 0.0, 1.0)
+
+
 class SeaShading:
     """The sea's shading fields on the device and the camera's footprint model, shared by the water's plugins.
 
@@ -249,22 +274,29 @@ class SeaShading:
                 out[k] += w * dr.gather(mi.Float, self.values, base + k, active)
         return [dr.select(active, weight * o, 0.0) for o in out]
 
-    def fields_at(self, rest, spacing, active):
-        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m]."""
+    def fields_at(self, rest, spacing, active, coarse=False):
+        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m].
+
+        With ``coarse``, also the same five of the upper level of each cascade's pair alone
+        (⌊s⌋ + 1: the waves a spacing 2^{1−f} Δ keeps, one to two octaves coarser), from the same gathers.
+        """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
         total = [mi.Float(0.0) for _ in range(5)]
+        upper = [mi.Float(0.0) for _ in range(5)]
         for c, (top, count) in enumerate(zip(self.band_tops, self.counts)):
             k_f = math.pi / (2.0 * spacing)
             s = dr.clip(dr.log2(top / k_f), 0.0, count - 1.0)
             low = dr.floor(s)
             frac = s - low
             entry = mi.UInt32(c * self.width) + mi.UInt32(low)
-            for e, w in ((entry, 1.0 - frac), (entry + 1, frac)):
-                part = self._level(e, rest.x, rest.y, w, active & (mi.UInt32(low) + (e - entry) < count))
-                total = [a + b for a, b in zip(total, part)]
-        return total
+            ok = active & (mi.UInt32(low) < count)
+            lower = self._level(entry, rest.x, rest.y, mi.Float(1.0), ok)
+            higher = self._level(entry + 1, rest.x, rest.y, mi.Float(1.0), active & (mi.UInt32(low) + 1 < count))
+            total = [a + (1.0 - frac) * b + frac * d for a, b, d in zip(total, lower, higher)]
+            upper = [a + d for a, d in zip(upper, higher)]
+        return (total, upper) if coarse else total
 
     def foam_at(self, si, active=True):
         """Fresh-foam weight [-] of a hit: B of the foam grid at its rest position, drawn as lace.
@@ -305,24 +337,8 @@ class SeaShading:
         centre = dr.gather(mi.Float, self.foam_fresh, mi.UInt32(0), active)
         fresh = dr.select(r < r_in, dr.lerp(centre, fresh, r / r_in), fresh)
         fresh = dr.select(r > r_out * (1 + 1e-6), outside, fresh)
-        # the lace tile, bilinear and periodic at the rest position (texel centres at (i + ½) size/M)
-        n = self.lace_n
-        u = (rest.x + self.origin.x) * (n / lace_size) - 0.5
-        v = (rest.y + self.origin.y) * (n / lace_size) - 0.5
-        u = u - n * dr.floor(u / n)
-        v = v - n * dr.floor(v / n)
-        li, lj = dr.floor(u), dr.floor(v)
-        fu, fv = u - li, v - lj
-        li0 = dr.minimum(mi.UInt32(li), n - 1)
-        lj0 = dr.minimum(mi.UInt32(lj), n - 1)
-        li1 = dr.select(li0 + 1 >= n, 0, li0 + 1)
-        lj1 = dr.select(lj0 + 1 >= n, 0, lj0 + 1)
-
-        def lace(jj, ii):
-            return dr.gather(mi.Float, self.lace, jj * n + ii, active)
-
-        tile = dr.lerp(dr.lerp(lace(lj0, li0), lace(lj0, li1), fu), dr.lerp(lace(lj1, li0), lace(lj1, li1), fu), fv)
-        weight = dr.clip((fresh - tile) / LACE_EDGE + 0.5, 0.0, 1.0)
+        weight = lace_weight(fresh, rest.x + self.origin.x, rest.y + self.origin.y, self.lace, self.lace_n, lace_size,
+                             active)
         return dr.select(self.on_top(si), weight, 0.0)
 
     def normal(self, si, active=True):
@@ -355,12 +371,18 @@ class SeaShading:
 
         A ray meets the mesh with a density per unit rest area ∝ ω_i·N_g (N_g = ∂p/∂u × ∂p/∂v of
         the triangle, the texture coordinates being rest positions), while the surface the fields
-        describe shows each rest element with its own projected area max(0, ω_i·N_s) (N_s of
+        describe shows each rest element with its own projected area max(0, ω_i·N) (N of
         :meth:`_area_normal`; facets turned away are hidden). The weight
-        w = max(0, ω_i·N_s) / ω_i·N_g (signs taken on the side the ray comes from) turns the
+        w = max(0, ω_i·N_c) / ω_i·N_g (signs taken on the side the ray comes from) turns the
         mesh's sampling into the fields' visible normals: its mean over a pixel is 1 where the two
         surfaces share their long waves (same vector area, Heitz 2014, Eq. 2), facets facing the ray
         count more and hidden ones not at all. Capped at :data:`MAX_AREA_WEIGHT`.
+
+        NOTE: N_c is the normal of the coarser level of each cascade's pair (one to two octaves
+        above the footprint), not the shading normal's: a weight that varied at the pixel's own
+        scale would paint the facets' foreshortening as brightness at the finest frequencies
+        (measured: 1.5–3.8× the brute-force luminance power above 0.3 cycles px⁻¹), where brute
+        force shows it as geometry. docs/pixel_detail.md compares the three choices.
         """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
@@ -368,11 +390,13 @@ class SeaShading:
         top = mi.Bool(active) & self.on_top(si)
         spacing = self.spacing(si)
         rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
-        area = self._area_normal(*self.fields_at(rest, spacing, top))
+        fine, upper = self.fields_at(rest, spacing, top, coarse=True)
+        area = self._area_normal(*fine)
+        seen = self._area_normal(*upper)
         wi = si.to_world(si.wi)
         mesh = dr.dot(wi, dr.cross(si.dp_du, si.dp_dv))
         side = dr.select(mesh >= 0, 1.0, -1.0)
-        weight = dr.maximum(dr.dot(wi, area) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
+        weight = dr.maximum(dr.dot(wi, seen) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
         weight = dr.select(top, dr.minimum(weight, MAX_AREA_WEIGHT), 1.0)
         return dr.normalize(area), weight, top
 
@@ -384,8 +408,8 @@ ROUGHNESS_PLUGIN = "oceanrender_sea_roughness"
 _CLASSES: dict[tuple[str, str], type] = {}
 
 
-def _classes() -> tuple[type, type, type]:
-    """(:class:`SeaSurfaceBSDF`, :class:`SeaRoughness`, :class:`SeaFoam`) of the active variant."""
+def _classes() -> tuple[type, type, type, type]:
+    """(:class:`SeaSurfaceBSDF`, :class:`SeaRoughness`, :class:`SeaFoam`, :class:`LaceFoam`) of the active variant."""
     import mitsuba as mi  # noqa: PLC0415
 
     key = (mi.variant(), "classes")
@@ -394,7 +418,7 @@ def _classes() -> tuple[type, type, type]:
     return _CLASSES[key]
 
 
-def _define_classes() -> tuple[type, type, type]:
+def _define_classes() -> tuple[type, type, type, type]:
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 
@@ -448,6 +472,34 @@ def _define_classes() -> tuple[type, type, type]:
 
         def to_string(self):
             return "SeaFoam[]"
+
+    class LaceFoam(mi.Texture):
+        """Fresh-foam weight [-] of a mesh whose foam is per vertex (the coast's cells, or no foam grid):
+        the interpolated B drawn as lace (:func:`lace_weight`) at the hit's horizontal world position."""
+
+        def __init__(self, props):
+            super().__init__(props)
+            self.nested = None
+
+        def attach(self, nested, lace, size: float) -> "LaceFoam":
+            import drjit as dr  # noqa: PLC0415
+
+            self.nested, self.n, self.size = nested, int(lace.shape[0]), float(size)
+            self.lace = mi.Float(np.ascontiguousarray(lace, np.float32).ravel())
+            dr.make_opaque(self.lace)
+            return self
+
+        def eval_1(self, si, active=True):
+            return lace_weight(self.nested.eval_1(si, active), si.p.x, si.p.y, self.lace, self.n, self.size, active)
+
+        def eval(self, si, active=True):
+            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
+
+        def mean(self):
+            return float(self.nested.mean())
+
+        def to_string(self):
+            return "LaceFoam[]"
 
     class SeaSurfaceBSDF(mi.BSDF):
         """The water surface's BSDF in the shading frame of the sea's fields at each hit.
@@ -564,7 +616,7 @@ def _define_classes() -> tuple[type, type, type]:
         def eval_pdf(self, ctx, si, wo, active=True):
             return self.bsdf._eval_pdf(ctx, si, self.perturbed, self.area, wo, active)
 
-    return SeaSurfaceBSDF, SeaRoughness, SeaFoam
+    return SeaSurfaceBSDF, SeaRoughness, SeaFoam, LaceFoam
 
 
 def sea_foam(shading: SeaShading):
@@ -572,6 +624,13 @@ def sea_foam(shading: SeaShading):
     import mitsuba as mi  # noqa: PLC0415
 
     return _classes()[2](mi.Properties()).attach(shading)
+
+
+def lace_foam(nested: dict, lace, size: float):
+    """A foam weight texture: ``nested`` (B per vertex, a texture dict) drawn as lace (:class:`LaceFoam`)."""
+    import mitsuba as mi  # noqa: PLC0415
+
+    return _classes()[3](mi.Properties()).attach(mi.load_dict(nested), lace, size)
 
 
 def sea_roughness(shading: SeaShading, fallback: dict):

@@ -53,7 +53,7 @@ from ..scene import arrays
 from .coastal_body import CoastalBody
 from .coastal_mesh import DRY_DROP
 from .frame import FrameGeometry, Terrain
-from .open_sea import WaterBody
+from .open_sea import WaterBody, scene_foam_lace
 from .radial_mesh import horizon_radius, radial_body_faces, radial_body_vertices
 
 #: A taper within this of 1 counts as 1 [-]: the sea there is the FFT sea to 1e-4 of its height.
@@ -331,7 +331,7 @@ class CoastInSea:
                                                   far_radius=self.far_radius())
         foam = self.vertex_foam(t, wet, len(positions)) if self.scene.foam.enabled else None
         roughness = self.vertex_roughness if self.per_vertex_roughness else None
-        return FrameGeometry(positions, normals, foam, roughness)
+        return FrameGeometry(positions, normals, foam, roughness, foam_lace=scene_foam_lace(self.scene))
 
     def vertex_foam(self, t: float, wet: NDArray, count: int) -> NDArray[np.float32]:
         """Fresh-foam weight per vertex [-]: the solver's white water inside, the sea's whitecaps outside, blended by w."""

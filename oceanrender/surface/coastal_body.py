@@ -27,6 +27,7 @@ from ..optics.foam import fresh_foam_decay_time
 from ..scene import arrays
 from .coastal_mesh import terrain_mesh, water_body_faces, water_body_vertices
 from .frame import FrameGeometry, Terrain
+from .open_sea import scene_foam_lace
 
 
 class CoastalBody:
@@ -100,7 +101,7 @@ class CoastalBody:
                                                  self.coastal.h_min)
         positions, normals = self.rotated(positions, normals)
         foam = self.vertex_foam(t, len(positions))[1] if self.scene.foam.enabled else None
-        return FrameGeometry(positions, normals, foam)
+        return FrameGeometry(positions, normals, foam, foam_lace=scene_foam_lace(self.scene))
 
     def rotated(self, positions: np.ndarray, normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Positions and normals turned by ``[coastal] rotation`` about ``origin`` (world = origin + R (p − origin))."""

@@ -28,6 +28,10 @@ class FrameGeometry:
     foam : (V,) float32 or None            Fresh-foam weight per vertex [-]: the fraction of the surface that reflects like fresh foam (open sea: whitecap coverage × its reflectance decay, docs/whitecaps.md; coast: white water), 0 off the surface.
     roughness : (V,) float32 or None       Beckmann α of the surface BSDF per vertex [-]: the slopes of
                                            the waves the mesh does not carry there; None: one scene-wide α.
+    shading : ShadingFields or None        The sea's fields for shading every hit (``[render] surface_shading
+                                           = "fields"``, FFT sea); None: vertex shading.
+    foam_lace : (tile, size) or None       The lace the foam is drawn through (a periodic tile uniform on
+                                           [0, 1) and its side [m]; :class:`FoamField`); None: foam as it is.
     """
 
     positions: NDArray[np.float32]
@@ -35,6 +39,7 @@ class FrameGeometry:
     foam: NDArray[np.float32] | None
     roughness: NDArray[np.float32] | None = None
     shading: "ShadingFields | None" = None
+    foam_lace: tuple[NDArray[np.float32], float] | None = None
 
     def non_finite(self) -> dict[str, int]:
         """How many values of each field are NaN or infinite (fields with none left out) [-]."""

@@ -60,6 +60,31 @@ SHADING_SPACINGS = np.logspace(-3.0, 5.0, 129)
 SHADING_NAMES = ("slope_x", "slope_y", "xx", "yy", "xy")
 
 
+def foam_lace(scene: Scene) -> NDArray[np.float32]:
+    """The scene's foam lace tile (:data:`LACE_SIZE` m, :func:`~oceanrender.waves.foam.lace_tile_Perlin1985`),
+    drawn out along the waves' direction (the wind's, or the sea state's), seeded by ``[ocean] seed``."""
+    ocean = scene.ocean
+    direction = ocean.direction if ocean.form != "wind" and ocean.direction is not None else ocean.wind_direction
+    return lace_tile_Perlin1985(LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH, math.radians(direction),
+                                ocean.seed)
+
+
+def scene_foam_lace(scene: Scene) -> tuple[NDArray[np.float32], float] | None:
+    """(tile, side [m]) the foam of a frame is drawn through: with foam and ``[render] surface_shading = "fields"``
+    (:func:`foam_lace`, kept per scene), else None (the foam as computed, the look before issue 40)."""
+    if not scene.foam.enabled or scene.render.surface_shading != "fields":
+        return None
+    key = (scene.ocean.seed, scene.ocean.wind_direction, scene.ocean.direction, scene.ocean.form)
+    if key not in _LACES:
+        _LACES.clear()
+        _LACES[key] = foam_lace(scene)
+    return _LACES[key], LACE_SIZE
+
+
+#: The last scene's lace tile, by what decides it (frames of a sequence share one).
+_LACES: dict[tuple, NDArray[np.float32]] = {}
+
+
 def polar_grid_sample(grid: RadialGrid, values: NDArray, x: NDArray, y: NDArray, outside: float) -> NDArray:
     """Values given at a :class:`RadialGrid`'s points (centre, then ring by ring), bilinear in (ring, angle) at (x, y) [m].
 
@@ -438,11 +463,8 @@ class WaterBody:
 
     @cached_property
     def lace(self) -> NDArray[np.float32]:
-        """The foam's lace tile (:data:`LACE_SIZE`, …), drawn out along the wind, seeded by the sea's seed."""
-        direction = self.scene.ocean.wind_direction if self.scene.ocean.form == "wind" else (
-            self.scene.ocean.direction if self.scene.ocean.direction is not None else self.scene.ocean.wind_direction)
-        return lace_tile_Perlin1985(LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH, math.radians(direction),
-                                    self.scene.ocean.seed)
+        """The foam's lace tile (:func:`foam_lace`)."""
+        return foam_lace(self.scene)
 
     def foam_field(self, t: float, origin: tuple[float, float]) -> FoamField | None:
         """B on the foam grid at t [s] (:meth:`foam_state`), for the renderer; None without the foam grid."""
@@ -472,4 +494,4 @@ class WaterBody:
             foam = self.vertex_foam(t, len(positions))[1]
         roughness = self.vertex_roughness if self.per_vertex_roughness else None
         shading = self.shading_fields(t, len(positions)) if self.shades_from_fields else None
-        return FrameGeometry(positions, normals, foam, roughness, shading)
+        return FrameGeometry(positions, normals, foam, roughness, shading, scene_foam_lace(self.scene))

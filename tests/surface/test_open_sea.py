@@ -227,3 +227,13 @@ def test_foam_grid_is_finer_than_the_mesh_and_its_lookup_reproduces_it():
     geometry = body.frame(0.5)
     assert geometry.foam is not None and geometry.shading.foam is not None
     assert geometry.shading.foam.fresh.size == len(grid.points)
+
+
+def test_foam_lace_only_with_field_shading_and_foam():
+    from oceanrender.surface.open_sea import LACE_SIZE, scene_foam_lace
+
+    tile, size = scene_foam_lace(field_sea())
+    assert size == LACE_SIZE and tile.ndim == 2 and 0.0 <= tile.min() and tile.max() < 1.0
+    assert scene_foam_lace(scene(foam={"enabled": False})) is None
+    assert scene_foam_lace(scene(foam={"enabled": True}, render={"surface_shading": "vertex"})) is None
+    assert WaterBody(field_sea()).frame(0.0).foam_lace is not None
