@@ -32,11 +32,22 @@ CPU (``llvm``) and GPU (``cuda``) variants (and ``scalar``):
    resolve stays in the BSDF, so each pixel keeps the spectrum's whole slope
    variance (Bruneton, Neyret & Holzschuch 2010, Eq. 4).
 
+5. **Visible normals.** The BSDF's values are scaled by the ratio of the
+   fields' projected area to the mesh's (:meth:`SeaShading.shading_frame`), so
+   the normals a pixel averages are the visible ones (Heitz 2014).
+6. **Foam.** The fresh-foam coverage B of the foam's own polar grid at the rest
+   position (:meth:`SeaShading.foam_at`), drawn through a lace tile
+   (:func:`lace_weight`): on average the fraction B of the surface, as a sheet
+   where B → 1 and as thin lines where B is small.
+
 The surface BSDF (``roughdielectric``, blended with foam) is wrapped by
 :class:`SeaSurfaceBSDF`, which gives it the shading frame of (3) — as
 Mitsuba's ``normalmap`` does, with the normal in world space — and reads α of
-(4) through the texture :class:`SeaRoughness`. Hits on the body's skirt and
-bottom (geometric normal not upward) keep the vertex shading.
+(4) through the texture :class:`SeaRoughness` and the foam of (6) through
+:class:`SeaFoam` (:class:`LaceFoam` for foam given per vertex, the coast's).
+The plugins are instantiated here and handed to the scene as objects (they hold
+the shared :class:`SeaShading`), not looked up by name. Hits on the body's skirt
+and bottom (geometric normal not upward) keep the vertex shading.
 
 References
 ----------
@@ -47,6 +58,10 @@ References
    Graphics Forum 29(2), 487–496, 2010 (the slope budget).
 .. [3] L. Williams, "Pyramidal parametrics," SIGGRAPH 1983 (level from footprint).
 .. [4] Mitsuba 3.9.1 sources, ``src/bsdfs/normalmap.cpp`` (the perturbed shading frame).
+.. [5] E. Heitz, "Understanding the masking-shadowing function in microfacet-based
+   BRDFs," Journal of Computer Graphics Techniques 3(2), 48–107, 2014 (Eq. 2: the
+   projected area of the microsurface equals the macrosurface's).
+.. [6] K. Perlin, "An image synthesizer," SIGGRAPH 1985 (the lace's turbulence).
 """
 
 from __future__ import annotations
@@ -55,7 +70,8 @@ import math
 
 import numpy as np
 
-__all__ = ["SHADING_SPACING_PER_FOOTPRINT", "MIN_COSINE", "pixel_angle", "SeaShading"]
+__all__ = ["SHADING_SPACING_PER_FOOTPRINT", "MIN_COSINE", "pixel_angle", "SeaShading", "sea_surface", "sea_roughness",
+           "sea_foam", "lace_foam", "lace_weight"]
 
 #: Shading spacing Δ per footprint w [-]: waves fade out around λ = 4Δ = 2w, the pixel's Nyquist wavelength.
 SHADING_SPACING_PER_FOOTPRINT = 0.5
@@ -400,10 +416,6 @@ class SeaShading:
         weight = dr.select(top, dr.minimum(weight, MAX_AREA_WEIGHT), 1.0)
         return dr.normalize(area), weight, top
 
-
-#: Names of the plugins in Mitsuba's registry.
-SURFACE_PLUGIN = "oceanrender_sea_surface"
-ROUGHNESS_PLUGIN = "oceanrender_sea_roughness"
 
 _CLASSES: dict[tuple[str, str], type] = {}
 
