@@ -261,8 +261,9 @@ class SeaShading:
         a1 = dr.gather(mi.Float, self.alpha, i + 1)
         return dr.lerp(a0, a1, f)
 
-    def _level(self, entry, x, y, weight, active):
-        """weight × the five fields of level table entry ``entry`` bilinearly at rest (x, y), periodic."""
+    def _level(self, entry, x, y, weight, active, channels: int = 5):
+        """weight × the first ``channels`` of the five fields of level table entry ``entry`` bilinearly at
+        rest (x, y), periodic."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
@@ -282,37 +283,31 @@ class SeaShading:
         j0 = dr.minimum(mi.UInt32(j0), dr.maximum(n, 1) - 1)
         i1 = dr.select(i0 + 1 >= n, 0, i0 + 1)
         j1 = dr.select(j0 + 1 >= n, 0, j0 + 1)
-        out = [mi.Float(0.0) for _ in range(5)]
+        out = [mi.Float(0.0) for _ in range(channels)]
         for (jj, ii, w) in ((j0, i0, (1 - fx) * (1 - fy)), (j0, i1, fx * (1 - fy)),
                             (j1, i0, (1 - fx) * fy), (j1, i1, fx * fy)):
             base = offset + (jj * n + ii) * 5
-            for k in range(5):
+            for k in range(channels):
                 out[k] += w * dr.gather(mi.Float, self.values, base + k, active)
         return [dr.select(active, weight * o, 0.0) for o in out]
 
-    def fields_at(self, rest, spacing, active, coarse=False):
-        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m].
-
-        With ``coarse``, also the same five of the upper level of each cascade's pair alone
-        (⌊s⌋ + 1: the waves a spacing 2^{1−f} Δ keeps, one to two octaves coarser), from the same gathers.
-        """
+    def fields_at(self, rest, spacing, active, channels: int = 5):
+        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m]
+        (the first ``channels`` of them)."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        total = [mi.Float(0.0) for _ in range(5)]
-        upper = [mi.Float(0.0) for _ in range(5)]
+        total = [mi.Float(0.0) for _ in range(channels)]
         for c, (top, count) in enumerate(zip(self.band_tops, self.counts)):
             k_f = math.pi / (2.0 * spacing)
             s = dr.clip(dr.log2(top / k_f), 0.0, count - 1.0)
             low = dr.floor(s)
             frac = s - low
             entry = mi.UInt32(c * self.width) + mi.UInt32(low)
-            ok = active & (mi.UInt32(low) < count)
-            lower = self._level(entry, rest.x, rest.y, mi.Float(1.0), ok)
-            higher = self._level(entry + 1, rest.x, rest.y, mi.Float(1.0), active & (mi.UInt32(low) + 1 < count))
-            total = [a + (1.0 - frac) * b + frac * d for a, b, d in zip(total, lower, higher)]
-            upper = [a + d for a, d in zip(upper, higher)]
-        return (total, upper) if coarse else total
+            for e, w in ((entry, 1.0 - frac), (entry + 1, frac)):
+                part = self._level(e, rest.x, rest.y, w, active & (mi.UInt32(low) + (e - entry) < count), channels)
+                total = [a + b for a, b in zip(total, part)]
+        return total
 
     def foam_at(self, si, active=True):
         """Fresh-foam weight [-] of a hit: B of the foam grid at its rest position, drawn as lace.
@@ -389,16 +384,16 @@ class SeaShading:
         the triangle, the texture coordinates being rest positions), while the surface the fields
         describe shows each rest element with its own projected area max(0, ω_i·N) (N of
         :meth:`_area_normal`; facets turned away are hidden). The weight
-        w = max(0, ω_i·N_c) / ω_i·N_g (signs taken on the side the ray comes from) turns the
+        w = max(0, ω_i·N) / ω_i·N_g (signs taken on the side the ray comes from) turns the
         mesh's sampling into the fields' visible normals: its mean over a pixel is 1 where the two
         surfaces share their long waves (same vector area, Heitz 2014, Eq. 2), facets facing the ray
         count more and hidden ones not at all. Capped at :data:`MAX_AREA_WEIGHT`.
 
-        NOTE: N_c is the normal of the coarser level of each cascade's pair (one to two octaves
-        above the footprint), not the shading normal's: a weight that varied at the pixel's own
-        scale would paint the facets' foreshortening as brightness at the finest frequencies
-        (measured: 1.5–3.8× the brute-force luminance power above 0.3 cycles px⁻¹), where brute
-        force shows it as geometry. docs/pixel_detail.md compares the three choices.
+        NOTE: the weight varies at the pixel's own scale, so it also paints the facets'
+        foreshortening as brightness where brute-force geometry shows it as shape: the
+        luminance power above 0.3 cycles px⁻¹ comes out 1.5–3.8× brute force's (docs/pixel_detail.md,
+        which compares this with a weight from waves two octaves coarser: closer spectra, 1.44× the
+        frame's cost instead of 1.23×).
         """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
@@ -406,13 +401,11 @@ class SeaShading:
         top = mi.Bool(active) & self.on_top(si)
         spacing = self.spacing(si)
         rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
-        fine, upper = self.fields_at(rest, spacing, top, coarse=True)
-        area = self._area_normal(*fine)
-        seen = self._area_normal(*upper)
+        area = self._area_normal(*self.fields_at(rest, spacing, top))
         wi = si.to_world(si.wi)
         mesh = dr.dot(wi, dr.cross(si.dp_du, si.dp_dv))
         side = dr.select(mesh >= 0, 1.0, -1.0)
-        weight = dr.maximum(dr.dot(wi, seen) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
+        weight = dr.maximum(dr.dot(wi, area) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
         weight = dr.select(top, dr.minimum(weight, MAX_AREA_WEIGHT), 1.0)
         return dr.normalize(area), weight, top
 
