@@ -50,7 +50,7 @@ FOAM_SEGMENTS = 1024
 #: The foam's lace tile (:func:`~oceanrender.waves.foam.lace_tile_Perlin1985`): side [m], texels per side,
 #: the wavelength of its field's peak [m] (the mesh of decaying whitecap foam, tens of centimetres) and the
 #: elongation of its lines along the wind [-].
-LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH = 16.0, 1024, 0.8, 3.0
+LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH = 16.0, 1024, 0.3, 2.0
 
 #: Shading spacings Δ of the α table of :class:`~.frame.ShadingFields` [m]: 1 mm to 100 km, 16 per decade
 #: (α² is smooth in log Δ: linear interpolation between them is within 1 % of the exact value).
