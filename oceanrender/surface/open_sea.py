@@ -85,6 +85,25 @@ def scene_foam_lace(scene: Scene) -> tuple[NDArray[np.float32], float] | None:
 _LACES: dict[tuple, NDArray[np.float32]] = {}
 
 
+#: σ of the Gaussian the renderer's B is smoothed with on the foam grid, in cells [-]: a crest breaking at one
+#: node would otherwise be drawn as the bilinear stencil's diamond (looked at in turbid_estuary).
+FOAM_SMOOTHING_CELLS = 1.0
+
+
+def smoothed_polar(grid: RadialGrid, values: NDArray, sigma: float) -> NDArray[np.float32]:
+    """``values`` at a :class:`RadialGrid`'s points (centre, then ring by ring) smoothed by a Gaussian of
+    ``sigma`` cells along the rings (periodic) and across them (edges held); the centre is kept.
+
+    The cells are square (Δr = r Δθ), so the kernel is round on the sea; its sum is 1, so the
+    mean over a ring band is kept.
+    """
+    from scipy.ndimage import gaussian_filter  # noqa: PLC0415
+
+    rings = np.asarray(values, float)[1:].reshape(grid.rings, grid.segments)
+    smooth = gaussian_filter(rings, sigma, mode=("nearest", "wrap"))
+    return np.concatenate([[float(values[0])], smooth.ravel()]).astype(np.float32)
+
+
 def polar_grid_sample(grid: RadialGrid, values: NDArray, x: NDArray, y: NDArray, outside: float) -> NDArray:
     """Values given at a :class:`RadialGrid`'s points (centre, then ring by ring), bilinear in (ring, angle) at (x, y) [m].
 
@@ -472,6 +491,7 @@ class WaterBody:
             return None
         grid = self.foam_grid_at(t)
         _, fresh = self.foam_state(t)
+        fresh = smoothed_polar(grid, fresh, FOAM_SMOOTHING_CELLS)
         return FoamField((grid.center[0] - origin[0], grid.center[1] - origin[1]), grid.inner_radius,
                          grid.outer_radius, grid.rings, grid.segments, np.asarray(fresh, np.float32),
                          float(self._foam_mean[1]), self.lace, LACE_SIZE)

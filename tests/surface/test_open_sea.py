@@ -237,3 +237,17 @@ def test_foam_lace_only_with_field_shading_and_foam():
     assert scene_foam_lace(scene(foam={"enabled": False})) is None
     assert scene_foam_lace(scene(foam={"enabled": True}, render={"surface_shading": "vertex"})) is None
     assert WaterBody(field_sea()).frame(0.0).foam_lace is not None
+
+
+def test_smoothed_polar_keeps_the_mean_and_rounds_a_single_node():
+    from oceanrender.surface.open_sea import smoothed_polar
+    from oceanrender.surface.radial_mesh import RadialGrid
+
+    grid = RadialGrid.square_cells((0.0, 0.0), 1.0, 50.0, 64)
+    values = np.zeros(len(grid.points))
+    values[1 + 30 * 64 + 63] = 1.0  # one node on ring 30, next to the angle's wrap
+    smooth = smoothed_polar(grid, values, 1.0).astype(float)
+    assert smooth.sum() == pytest.approx(1.0, rel=1e-6)
+    rings = smooth[1:].reshape(grid.rings, 64)
+    assert rings[30, 0] == pytest.approx(rings[30, 62], rel=1e-6)  # periodic in angle: symmetric across the wrap
+    assert rings[29, 63] == pytest.approx(rings[30, 62], rel=1e-6)  # round: the same one cell away either way
