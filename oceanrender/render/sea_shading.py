@@ -261,9 +261,8 @@ class SeaShading:
         a1 = dr.gather(mi.Float, self.alpha, i + 1)
         return dr.lerp(a0, a1, f)
 
-    def _level(self, entry, x, y, weight, active, channels: int = 5):
-        """weight × the first ``channels`` of the five fields of level table entry ``entry`` bilinearly at
-        rest (x, y), periodic."""
+    def _level(self, entry, x, y, weight, active):
+        """weight × the five fields of level table entry ``entry`` bilinearly at rest (x, y), periodic."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
@@ -283,21 +282,20 @@ class SeaShading:
         j0 = dr.minimum(mi.UInt32(j0), dr.maximum(n, 1) - 1)
         i1 = dr.select(i0 + 1 >= n, 0, i0 + 1)
         j1 = dr.select(j0 + 1 >= n, 0, j0 + 1)
-        out = [mi.Float(0.0) for _ in range(channels)]
+        out = [mi.Float(0.0) for _ in range(5)]
         for (jj, ii, w) in ((j0, i0, (1 - fx) * (1 - fy)), (j0, i1, fx * (1 - fy)),
                             (j1, i0, (1 - fx) * fy), (j1, i1, fx * fy)):
             base = offset + (jj * n + ii) * 5
-            for k in range(channels):
+            for k in range(5):
                 out[k] += w * dr.gather(mi.Float, self.values, base + k, active)
         return [dr.select(active, weight * o, 0.0) for o in out]
 
-    def fields_at(self, rest, spacing, active, channels: int = 5):
-        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m]
-        (the first ``channels`` of them)."""
+    def fields_at(self, rest, spacing, active):
+        """(s_x, s_y, J_xx − 1, J_yy − 1, J_xy) [-] of the waves Δ resolves at rest position ``rest`` [m]."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        total = [mi.Float(0.0) for _ in range(channels)]
+        total = [mi.Float(0.0) for _ in range(5)]
         for c, (top, count) in enumerate(zip(self.band_tops, self.counts)):
             k_f = math.pi / (2.0 * spacing)
             s = dr.clip(dr.log2(top / k_f), 0.0, count - 1.0)
@@ -305,7 +303,7 @@ class SeaShading:
             frac = s - low
             entry = mi.UInt32(c * self.width) + mi.UInt32(low)
             for e, w in ((entry, 1.0 - frac), (entry + 1, frac)):
-                part = self._level(e, rest.x, rest.y, w, active & (mi.UInt32(low) + (e - entry) < count), channels)
+                part = self._level(e, rest.x, rest.y, w, active & (mi.UInt32(low) + (e - entry) < count))
                 total = [a + b for a, b in zip(total, part)]
         return total
 
@@ -352,19 +350,21 @@ class SeaShading:
                              active)
         return dr.select(self.on_top(si), weight, 0.0)
 
-    def normal(self, si, active=True):
-        """(unit normal [world], Beckmann α [-], on_top) at a hit from the fields at its footprint."""
-        import drjit as dr  # noqa: PLC0415
+    def _area_at(self, si, active):
+        """(N of :meth:`_area_normal` at the hit's footprint, shading spacing Δ [m], on_top) of a hit."""
         import mitsuba as mi  # noqa: PLC0415
 
         top = mi.Bool(active) & self.on_top(si)
         spacing = self.spacing(si)
         rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
-        sx, sy, xx, yy, xy = self.fields_at(rest, spacing, top)
-        jxx, jyy = 1.0 + xx, 1.0 + yy
-        det = dr.maximum(jxx * jyy - xy * xy, MIN_JACOBIAN)
-        n = dr.normalize(self._area_normal(sx, sy, xx, yy, xy))
-        return n, self.alpha_at(spacing), top
+        return self._area_normal(*self.fields_at(rest, spacing, top)), spacing, top
+
+    def normal(self, si, active=True):
+        """(unit normal [world], Beckmann α [-], on_top) at a hit from the fields at its footprint."""
+        import drjit as dr  # noqa: PLC0415
+
+        area, spacing, top = self._area_at(si, active)
+        return dr.normalize(area), self.alpha_at(spacing), top
 
     @staticmethod
     def _area_normal(sx, sy, xx, yy, xy):
@@ -398,10 +398,7 @@ class SeaShading:
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        top = mi.Bool(active) & self.on_top(si)
-        spacing = self.spacing(si)
-        rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
-        area = self._area_normal(*self.fields_at(rest, spacing, top))
+        area, _, top = self._area_at(si, active)
         wi = si.to_world(si.wi)
         mesh = dr.dot(wi, dr.cross(si.dp_du, si.dp_dv))
         side = dr.select(mesh >= 0, 1.0, -1.0)
@@ -427,16 +424,20 @@ def _define_classes() -> tuple[type, type, type, type]:
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 
-    class SeaRoughness(mi.Texture):
+    class _ScalarTexture(mi.Texture):
+        """A one-channel texture defined by ``eval_1`` (the spectrum is that value at every λ)."""
+
+        def eval(self, si, active=True):
+            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
+
+        def to_string(self):
+            return f"{type(self).__name__}[]"
+
+    class SeaRoughness(_ScalarTexture):
         """Beckmann α [-] of a water hit: the slopes its footprint does not resolve (:meth:`SeaShading.alpha_at`).
 
         Off the upper surface (skirt, bottom) the texture ``fallback`` (the vertex α or a constant).
         """
-
-        def __init__(self, props):
-            super().__init__(props)
-            self.shading = None
-            self.fallback = None
 
         def attach(self, shading: SeaShading, fallback) -> "SeaRoughness":
             self.shading, self.fallback = shading, fallback
@@ -446,21 +447,11 @@ def _define_classes() -> tuple[type, type, type, type]:
             alpha = self.shading.alpha_at(self.shading.spacing(si))
             return dr.select(self.shading.on_top(si), alpha, self.fallback.eval_1(si, active))
 
-        def eval(self, si, active=True):
-            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
-
         def mean(self):
             return float(np.mean(np.asarray(self.shading.alpha)))
 
-        def to_string(self):
-            return "SeaRoughness[]"
-
-    class SeaFoam(mi.Texture):
+    class SeaFoam(_ScalarTexture):
         """Fresh-foam weight [-] of a water hit from the foam's field-resolution grid (:meth:`SeaShading.foam_at`)."""
-
-        def __init__(self, props):
-            super().__init__(props)
-            self.shading = None
 
         def attach(self, shading: SeaShading) -> "SeaFoam":
             self.shading = shading
@@ -469,26 +460,14 @@ def _define_classes() -> tuple[type, type, type, type]:
         def eval_1(self, si, active=True):
             return self.shading.foam_at(si, active)
 
-        def eval(self, si, active=True):
-            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
-
         def mean(self):
             return float(np.mean(np.asarray(self.shading.foam_fresh)))
 
-        def to_string(self):
-            return "SeaFoam[]"
-
-    class LaceFoam(mi.Texture):
+    class LaceFoam(_ScalarTexture):
         """Fresh-foam weight [-] of a mesh whose foam is per vertex (the coast's cells, or no foam grid):
         the interpolated B drawn as lace (:func:`lace_weight`) at the hit's horizontal world position."""
 
-        def __init__(self, props):
-            super().__init__(props)
-            self.nested = None
-
         def attach(self, nested, lace, size: float) -> "LaceFoam":
-            import drjit as dr  # noqa: PLC0415
-
             self.nested, self.n, self.size = nested, int(lace.shape[0]), float(size)
             self.lace = mi.Float(np.ascontiguousarray(lace, np.float32).ravel())
             dr.make_opaque(self.lace)
@@ -497,14 +476,8 @@ def _define_classes() -> tuple[type, type, type, type]:
         def eval_1(self, si, active=True):
             return lace_weight(self.nested.eval_1(si, active), si.p.x, si.p.y, self.lace, self.n, self.size, active)
 
-        def eval(self, si, active=True):
-            return mi.UnpolarizedSpectrum(self.eval_1(si, active))
-
         def mean(self):
             return float(self.nested.mean())
-
-        def to_string(self):
-            return "LaceFoam[]"
 
     class SeaSurfaceBSDF(mi.BSDF):
         """The water surface's BSDF in the shading frame of the sea's fields at each hit.

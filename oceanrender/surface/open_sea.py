@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 from numpy.typing import NDArray
@@ -65,24 +65,22 @@ def foam_lace(scene: Scene) -> NDArray[np.float32]:
     drawn out along the waves' direction (the wind's, or the sea state's), seeded by ``[ocean] seed``."""
     ocean = scene.ocean
     direction = ocean.direction if ocean.form != "wind" and ocean.direction is not None else ocean.wind_direction
-    return lace_tile_Perlin1985(LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH, math.radians(direction),
-                                ocean.seed)
+    return _lace_tile(float(direction), int(ocean.seed))
+
+
+@lru_cache(maxsize=2)
+def _lace_tile(direction_deg: float, seed: int) -> NDArray[np.float32]:
+    """:func:`foam_lace`'s tile, made once per (direction, seed): a sequence's frames share it."""
+    return lace_tile_Perlin1985(LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH, math.radians(direction_deg),
+                                seed)
 
 
 def scene_foam_lace(scene: Scene) -> tuple[NDArray[np.float32], float] | None:
     """(tile, side [m]) the foam of a frame is drawn through: with foam and ``[render] surface_shading = "fields"``
-    (:func:`foam_lace`, kept per scene), else None (the foam as computed, the look before issue 40)."""
+    (:func:`foam_lace`), else None (the foam as computed, the look before issue 40)."""
     if not scene.foam.enabled or scene.render.surface_shading != "fields":
         return None
-    key = (scene.ocean.seed, scene.ocean.wind_direction, scene.ocean.direction, scene.ocean.form)
-    if key not in _LACES:
-        _LACES.clear()
-        _LACES[key] = foam_lace(scene)
-    return _LACES[key], LACE_SIZE
-
-
-#: The last scene's lace tile, by what decides it (frames of a sequence share one).
-_LACES: dict[tuple, NDArray[np.float32]] = {}
+    return foam_lace(scene), LACE_SIZE
 
 
 #: σ of the Gaussian the renderer's B is smoothed with on the foam grid, in cells [-]: a crest breaking at one
@@ -144,6 +142,7 @@ class WaterBody:
         self._history: dict[float, NDArray] = {}  # foam history: Jacobian at grid times (still camera)
         self._foam_mean = np.zeros(2)  # (F, B) of the far sea, from the last foam_state
         self._foam_window: tuple | None = None  # (key, states) of the last accumulation
+        self._foam_last: tuple | None = None  # ((t, J_c), (F, B), far mean) of the last foam_state
         if mesh.kind == "radial":
             from ..scene.motion import camera_motion  # noqa: PLC0415
 
@@ -355,6 +354,15 @@ class WaterBody:
         return states[-2:]
 
     def foam_state(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Whitecap coverage F and fresh-foam coverage B at the rest points of time t [s] [-] (:meth:`_foam_state`;
+        the last time's kept: a frame asks twice, for its vertices and for its foam grid)."""
+        key = (t, self.foam_threshold)  # (the criterion: scripts/whitecap_coverage.py changes it on one body)
+        if self._foam_last is None or self._foam_last[0] != key:
+            self._foam_last = (key, self._foam_state(t), self._foam_mean.copy())
+        self._foam_mean = self._foam_last[2].copy()
+        return self._foam_last[1]
+
+    def _foam_state(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Whitecap coverage F and fresh-foam coverage B at the rest points of time t [s] [-].
 
         The accumulation (:func:`~oceanrender.waves.foam.two_stage_foam_step`)
@@ -480,11 +488,6 @@ class WaterBody:
         return ShadingFields(tuple(cascades), SHADING_SPACINGS, self.shading_alpha, origin, coords,
                              self.foam_field(t, origin))
 
-    @cached_property
-    def lace(self) -> NDArray[np.float32]:
-        """The foam's lace tile (:func:`foam_lace`)."""
-        return foam_lace(self.scene)
-
     def foam_field(self, t: float, origin: tuple[float, float]) -> FoamField | None:
         """B on the foam grid at t [s] (:meth:`foam_state`), for the renderer; None without the foam grid."""
         if self.foam_grid is None:
@@ -494,7 +497,7 @@ class WaterBody:
         fresh = smoothed_polar(grid, fresh, FOAM_SMOOTHING_CELLS)
         return FoamField((grid.center[0] - origin[0], grid.center[1] - origin[1]), grid.inner_radius,
                          grid.outer_radius, grid.rings, grid.segments, np.asarray(fresh, np.float32),
-                         float(self._foam_mean[1]), self.lace, LACE_SIZE)
+                         float(self._foam_mean[1]), foam_lace(self.scene), LACE_SIZE)
 
     def frame(self, t: float) -> FrameGeometry:
         """The closed body at time t [s]; its ``foam`` is the fresh-foam coverage B (:meth:`vertex_foam`)."""
