@@ -23,7 +23,8 @@ Measured in the window (luminance Y [cd m⁻²] from absolute XYZ):
 3. the count of glitter pixels, Y above the white plane's luminance (a sunlit white
    Lambertian sheet: a fixed luminance per unit solid angle), against brute force.
 
-Writes docs/images/pixel_detail/<case>_{fields,vertex,brute}.png and prints a JSON line per case.
+Writes docs/images/pixel_detail/<case>_{fields,vertex,brute}.png, the strip <case>.png (vertex |
+fields | brute) and prints a JSON line per case.
 
 Usage: python scripts/pixel_detail.py [--spp 256] [--cases default,default_4,glitter_4,glitter_12]
 """
@@ -181,6 +182,7 @@ def main() -> None:
     parser.add_argument("--spp", type=int, default=256)
     parser.add_argument("--cases", default=",".join(CASES))
     parser.add_argument("--out", default=str(ROOT / "docs" / "images" / "pixel_detail"))
+    parser.add_argument("--modes", default="fields,vertex", help="the shadings compared with brute force")
     args = parser.parse_args()
     import colour  # noqa: PLC0415
     import imageio.v3 as iio  # noqa: PLC0415
@@ -211,6 +213,7 @@ def main() -> None:
             "vertex": (seq.faces, replace(geometry, shading=None)),
             "brute": (faces_bf, geometry_bf),
         }
+        builds = {mode: build for mode, build in builds.items() if mode in args.modes.split(",") + ["brute"]}
         renders = {}
         for mode, (faces, geo) in builds.items():
             renderer = WaterRenderer.build(scene, seq.iops, faces, geo, **common)
@@ -234,10 +237,13 @@ def main() -> None:
                   "frequency_cy_px": freq.round(4).tolist(), "power_brute": p_ref.tolist(),
                   "power_ratio_brute_seeds": floor.round(3).tolist(),
                   "power_worst_brute_seeds": float(np.max(np.abs(floor - 1.0)))}
-        for mode in ("fields", "vertex", "brute"):
+        strip = []
+        for mode in builds:
             xyz = np.mean(renders[mode], axis=0)
             rgb = seq.vision.apply(xyz, white, adaptation)
-            iio.imwrite(out / f"{case}_{mode}.png", encode_sRGB_8bit(np.clip(rgb, 0, 1)))
+            image = encode_sRGB_8bit(np.clip(rgb, 0, 1))
+            iio.imwrite(out / f"{case}_{mode}.png", image)
+            strip.append(image)
             result[f"seconds_{mode}"] = renders[mode + "_seconds"]
             result[f"mean_Y_{mode}"] = float(xyz[..., 1].mean())
             if mode == "brute":
@@ -250,6 +256,11 @@ def main() -> None:
             count = np.mean([np.count_nonzero(r[..., 1] > threshold) for r in renders[mode]])
             result[f"glitter_{mode}"] = float(count)
             result[f"glitter_ratio_{mode}"] = float(count / count_ref) if count_ref else float("nan")
+        # the strip of the docs: vertex | fields | brute, 4 px white between
+        order = [m for m in ("vertex", "fields", "brute") if m in builds]
+        images = [strip[list(builds).index(m)] for m in order]
+        gap = np.full((images[0].shape[0], 4, 3), 255, np.uint8)
+        iio.imwrite(out / f"{case}.png", np.hstack([part for image in images for part in (image, gap)][:-1]))
         print(json.dumps(result), flush=True)
 
 

@@ -133,6 +133,19 @@ def load_water_medium(medium: dict):
     return mi.load_dict(medium)
 
 
+def join_attributes(geometry: FrameGeometry) -> dict:
+    """The per-vertex attributes of a joined body's field shading (:class:`~oceanrender.surface.frame.JoinShading`):
+    {name: flat float buffer}, empty for a body that is the sea (:mod:`.sea_shading`)."""
+    from .sea_shading import JOIN_ATTRIBUTE, SEA_NORMAL_ATTRIBUTE, SEA_POSITION_ATTRIBUTE  # noqa: PLC0415
+
+    join = None if geometry.shading is None else geometry.shading.join
+    if join is None:
+        return {}
+    factors = np.column_stack([join.short_taper, join.foam_scale, join.foam_offset])
+    return {SEA_NORMAL_ATTRIBUTE: mitsuba_floats(join.sea_normals), SEA_POSITION_ATTRIBUTE: mitsuba_floats(join.sea_positions),
+            JOIN_ATTRIBUTE: mitsuba_floats(factors)}
+
+
 def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=None):
     """The water body as a Mitsuba mesh (id :data:`WATER_ID`) with ``bsdf`` and, if given, an interior medium
     (a dict of :func:`~oceanrender.render.scene.water_medium`, or the object :func:`load_water_medium` made)."""
@@ -148,6 +161,8 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=No
         mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(geometry.foam))
     if geometry.roughness is not None:
         mesh.add_attribute(ROUGHNESS_ATTRIBUTE, 1, mitsuba_floats(geometry.roughness))
+    for name, values in join_attributes(geometry).items():
+        mesh.add_attribute(name, 3, values)
     params = mi.traverse(mesh)
     params["vertex_positions"] = mitsuba_floats(geometry.positions)
     params["vertex_normals"] = mitsuba_floats(geometry.normals)
@@ -276,6 +291,8 @@ def update_water_parameters(params, geometry: FrameGeometry) -> None:
         params[f"{WATER_ID}.{ROUGHNESS_ATTRIBUTE}"] = mitsuba_floats(geometry.roughness)
     if geometry.shading is not None:
         params[f"{WATER_ID}.vertex_texcoords"] = mitsuba_floats(geometry.shading.texcoords)
+    for name, values in join_attributes(geometry).items():
+        params[f"{WATER_ID}.{name}"] = values
     params.update()
 
 

@@ -40,7 +40,7 @@ triangles, out to the horizon ring, so no water or land ends in a void.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from pathlib import Path
 
@@ -52,7 +52,7 @@ from ..coastal.embedding import (blend_weight, depth_taper, domain_frame, grid_s
 from ..scene import arrays
 from .coastal_body import CoastalBody
 from .coastal_mesh import DRY_DROP
-from .frame import FrameGeometry, Terrain
+from .frame import FrameGeometry, JoinShading, Terrain
 from .open_sea import WaterBody, scene_foam_lace
 from .radial_mesh import horizon_radius, radial_body_faces, radial_body_vertices
 
@@ -323,15 +323,51 @@ class CoastInSea:
         return disp, slope, wet
 
     def frame(self, t: float) -> FrameGeometry:
-        """The closed body at scene time t [s]."""
-        disp, slope, wet = self.surface(t)
+        """The closed body at scene time t [s]; with ``[render] surface_shading = "fields"`` its shading fields
+        (the sea's, joined as :meth:`join_shading` says)."""
+        sea = self.sea_body.surface(t)
+        disp, slope, wet = self.join(self.mesh, sea, t)
         normals = np.column_stack([-slope[:, 0], -slope[:, 1], np.ones(len(slope))])
         normals /= np.linalg.norm(normals, axis=1, keepdims=True)
         positions, normals = radial_body_vertices(self.grid, disp, normals, self.scene.water.depth,
                                                   far_radius=self.far_radius())
         foam = self.vertex_foam(t, wet, len(positions)) if self.scene.foam.enabled else None
         roughness = self.vertex_roughness if self.per_vertex_roughness else None
-        return FrameGeometry(positions, normals, foam, roughness, foam_lace=scene_foam_lace(self.scene))
+        shading = None
+        if self.sea_body.shades_from_fields:
+            shading = replace(self.sea_body.shading_fields(t, len(positions)),
+                              join=self.join_shading(t, sea, positions, normals, wet))
+        return FrameGeometry(positions, normals, foam, roughness, shading, scene_foam_lace(self.scene))
+
+    def join_shading(self, t: float, sea, positions: NDArray, normals: NDArray, wet: NDArray) -> JoinShading:
+        """How a hit takes the sea's detail (:class:`~.frame.JoinShading`; docs/pixel_detail.md).
+
+        ``sea``: the FFT sea at the rest points (its displacement [m] and unit normals),
+        ``positions`` and ``normals`` the body's vertices (all of them), ``wet`` the rest points
+        under water. On the surface
+        τ_s of the join, the sea's whitecaps weighted A = (1 − w) τ_s and the solver's white
+        water C = w B_S (the blend of :meth:`vertex_foam`), all 0 where dry; on the far ring
+        τ_s = A = 1 (the sea itself); 0 on the skirt and bottom (never field-shaded).
+        """
+        g = self.mesh
+        top = wet.size
+        count = len(normals)
+        own = np.array(normals, dtype=np.float32)
+        own[:top] = sea.normals
+        own_positions = np.array(positions, dtype=np.float32)
+        own_positions[:top] = np.column_stack([g.x, g.y, np.zeros(top)]) + sea.displacement
+        tau = np.zeros(count, np.float32)
+        scale = np.zeros(count, np.float32)
+        offset = np.zeros(count, np.float32)
+        tau[:top] = np.where(wet, g.tau_s, 0.0)
+        scale[:top] = np.where(wet, (1.0 - g.w) * g.tau_s, 0.0)
+        tau[top: top + self.grid.segments] = scale[top: top + self.grid.segments] = 1.0
+        inside = np.flatnonzero((g.w > 0) & wet)
+        if inside.size and self.scene.foam.enabled:
+            _, swe = self.coast.foam_state(t)
+            offset[inside] = g.w[inside] * grid_sample(swe, self.domain, self.coastal.spacing, g.x[inside],
+                                                       g.y[inside])
+        return JoinShading(own, own_positions, tau, scale, offset)
 
     def vertex_foam(self, t: float, wet: NDArray, count: int) -> NDArray[np.float32]:
         """Fresh-foam weight per vertex [-]: the solver's white water inside, the sea's whitecaps outside, blended by w."""

@@ -53,8 +53,9 @@ class FrameGeometry:
         return counts
 
 
-#: Number of values per node of a :class:`ShadingFields` level: ∂η/∂x₀, ∂η/∂y₀, ∂Dx/∂x₀, ∂Dy/∂y₀, ∂Dx/∂y₀ [-].
-SHADING_CHANNELS = 5
+#: Number of values per node of a :class:`ShadingFields` level: η, D_x, D_y [m] (the displaced surface's
+#: position), ∂η/∂x₀, ∂η/∂y₀, ∂Dx/∂x₀, ∂Dy/∂y₀, ∂Dx/∂y₀ [-] (its normal).
+SHADING_CHANNELS = 8
 
 
 @dataclass(frozen=True)
@@ -112,6 +113,36 @@ class FoamField:
 
 
 @dataclass(frozen=True)
+class JoinShading:
+    """How a body whose surface is not the FFT sea everywhere (the coast inside the open sea) takes the sea's
+    detail at a hit (docs/pixel_detail.md, "The coast inside the open sea").
+
+    The body's vertex normals are its own surface's; the sea's fields add what its mesh
+    does not carry, scaled as the body scales the sea's short waves:
+    s = s_body + τ_s (s_fields − s_sea), s the slope (−n_x/n_z, −n_y/n_z) of the interpolated
+    unit normal of the body, of the fields at the hit's footprint and of the sea's own vertices.
+    Where τ_s = 1 and the body is the sea, s_body = s_sea and s = s_fields.
+
+    Attributes
+    ----------
+    sea_normals : (V, 3) float32   The FFT sea's own unit vertex normals (the surface its mesh would carry).
+    sea_positions : (V, 3) float32 The FFT sea's own vertex positions [m] (rest + displacement, mean level 0):
+                                   the parallax step moves a hit by τ_s times the fields' offset from them.
+    short_taper : (V,) float32     τ_s [-]: the factor of the sea's short waves in the body (0 off the water).
+    foam_scale, foam_offset : (V,) float32
+                                   A, C [-]: the fresh foam at a hit is A·B_grid + C, B_grid the foam grid's
+                                   (the sea's whitecaps; A = (1 − w) τ_s) and C the body's own (the solver's
+                                   white water, w B_S), interpolated over the triangle.
+    """
+
+    sea_normals: NDArray[np.float32]
+    sea_positions: NDArray[np.float32]
+    short_taper: NDArray[np.float32]
+    foam_scale: NDArray[np.float32]
+    foam_offset: NDArray[np.float32]
+
+
+@dataclass(frozen=True)
 class ShadingFields:
     """What the renderer needs to shade every water hit from the sea's own fields (docs/pixel_detail.md).
 
@@ -131,6 +162,8 @@ class ShadingFields:
     origin : (float, float)              Rest position of texture coordinate (0, 0) [m].
     texcoords : (V, 2) float32           Per vertex of the body: rest (x, y) − origin [m] (0 off the surface).
     foam : FoamField or None             The foam at field resolution (None: no foam, or the vertices' foam).
+    join : JoinShading or None           How the body combines its own surface with the fields (None: the body is
+                                         the sea).
     """
 
     cascades: tuple[ShadingCascade, ...]
@@ -139,6 +172,7 @@ class ShadingFields:
     origin: tuple[float, float]
     texcoords: NDArray[np.float32]
     foam: FoamField | None = None
+    join: JoinShading | None = None
 
 
 class FrameError(RuntimeError):

@@ -57,7 +57,7 @@ LACE_SIZE, LACE_RESOLUTION, LACE_SCALE, LACE_STRETCH = 16.0, 1024, 0.3, 2.0
 SHADING_SPACINGS = np.logspace(-3.0, 5.0, 129)
 
 #: The fields a cascade level gives the renderer, in :data:`~.frame.SHADING_CHANNELS` order.
-SHADING_NAMES = ("slope_x", "slope_y", "xx", "yy", "xy")
+SHADING_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y", "xx", "yy", "xy")
 
 
 def foam_lace(scene: Scene) -> NDArray[np.float32]:

@@ -96,6 +96,53 @@ def test_hit_normals_are_the_sea_filtered_at_the_footprint(variant, body_and_fie
     dr.eval()
 
 
+def test_parallax_moves_a_hit_to_where_its_ray_meets_the_fine_surface(variant, body_and_fields, rng):
+    # A ray from the camera meets the mesh — here the sea filtered to a mesh spacing of 6 m — at
+    # p over rest point x₀; the fields at Δ put the surface at P(x) = (x + D_x, y + D_y, η). Two
+    # Newton steps land on a rest point x* whose P(x*) lies on the ray: its distance from the ray is
+    # of higher order in the offset (measured against the offset |P(x₀) − p| itself). A hit
+    # already on the fine surface stays where it is.
+    import drjit as dr
+    import mitsuba as mi
+
+    scene, body, fields = body_and_fields
+    camera = np.array([3.0, -2.0, 6.0])
+    points = rng.uniform(-10.0, 10.0, (2000, 2)) + np.asarray(fields.origin) + [0.0, 20.0]
+    spacing = 0.5  # [m]: Δ (the test sea's finest waves are ~3 m long)
+
+    def surface(rest_points, h):
+        sample = body.sea.sample(rest_points[:, 0], rest_points[:, 1], 0.75, np.full(len(rest_points), h))
+        return np.column_stack([rest_points, np.zeros(len(rest_points))]) + sample.displacement
+
+    p = surface(points, 6.0)
+    si = interactions(points, camera)
+    si.p = mi.Point3f(*(mi.Float(p[:, k]) for k in range(3)))
+    si.wi = si.sh_frame.to_local(dr.normalize(mi.Vector3f(*(float(c) for c in camera)) - si.p))
+    shading = SeaShading(fields, camera, 1e-3)
+    rest = mi.Point2f(mi.Float(points[:, 0]), mi.Float(points[:, 1]))
+    moved = shading.parallax(si, rest, mi.Float(spacing), mi.Bool(True))
+    xs = np.column_stack([np.array(moved.x, float), np.array(moved.y, float)])
+
+    def off_ray(q):
+        d = (p - camera) / np.linalg.norm(p - camera, axis=1, keepdims=True)
+        return np.linalg.norm(np.cross(q - camera, d), axis=1)
+
+    before, after = off_ray(surface(points, spacing)), off_ray(surface(xs, spacing))
+    # sub-mesh waves of slope s ~0.1 seen at ~20° (c = cot ~3): one step leaves ~(c s)² of the offset
+    assert np.median(before) > 0.05  # [m]: there was an offset to remove
+    assert np.median(after) < 0.1 * np.median(before)
+    assert np.quantile(after, 0.9) < 0.3 * np.quantile(before, 0.9)
+    # a hit already on the fine surface: P(x₀) itself
+    on = surface(points, spacing)
+    si.p = mi.Point3f(*(mi.Float(on[:, k]) for k in range(3)))
+    stay = shading.parallax(si, rest, mi.Float(spacing), mi.Bool(True))
+    # float32 world coordinates of ~30 m (ROUNDOFF32 × 30 m × 100 operations: 0.1 mm), amplified where the
+    # ray grazes a facet (the Newton system's determinant → 0) for a few: those within 1 % of Δ
+    err = np.hypot(np.array(stay.x, float) - points[:, 0], np.array(stay.y, float) - points[:, 1])
+    assert np.quantile(err, 0.99) < 1e-4 and err.max() < 0.01 * spacing
+    dr.eval()
+
+
 def test_slope_budget_is_kept_at_every_footprint(variant, body_and_fields, rng):
     # What the footprint resolves (the normal's slopes) plus α² is the spectrum's total
     # mean-square slope at every footprint (Bruneton et al. 2010, Eq. 4): the resolved part
@@ -163,6 +210,90 @@ def test_foam_lookup_matches_the_grid_and_keeps_the_mean_cover(variant, body_and
     local = rep(grid, center=foam.center)
     fresh = polar_grid_sample(local, foam.fresh, grid_points[:, 0], grid_points[:, 1], foam.outside)
     np.testing.assert_allclose(got, np.clip(fresh / LACE_EDGE + 0.5, 0.0, 1.0), atol=10 * ROUNDOFF32 / LACE_EDGE)
+    del mi
+
+
+def _joined(fields, geometry, tau, scale, offset, sea_normals=None, sea_positions=None):
+    """The shading fields of ``geometry``'s body as a joined body with constant (τ_s, A, C)."""
+    from dataclasses import replace
+
+    from oceanrender.surface.frame import JoinShading
+
+    count = len(geometry.positions)
+    normals = geometry.normals if sea_normals is None else sea_normals
+    positions = geometry.positions if sea_positions is None else sea_positions
+    return replace(fields, join=JoinShading(np.asarray(normals, np.float32), np.asarray(positions, np.float32),
+                                            np.full(count, tau, np.float32),
+                                            np.full(count, scale, np.float32), np.full(count, offset, np.float32)))
+
+
+def _mesh_hits(geometry, body, fields, points):
+    """(surface interactions of vertical rays at world points (x, y) with the body's mesh, its attributes on it;
+    the scene, to be kept alive while they are used: they point into its mesh)."""
+    from dataclasses import replace
+
+    import mitsuba as mi
+
+    from oceanrender.render.renderer import water_mesh
+
+    mesh = water_mesh(body.faces, replace(geometry, shading=fields), {"type": "diffuse"})
+    scene = mi.load_dict({"type": "scene", "water": mesh})
+    x, y = np.asarray(points, float).T
+    ray = mi.Ray3f(mi.Point3f(x, y, np.full_like(x, 20.0)), mi.Vector3f(0.0, 0.0, -1.0))
+    si = scene.ray_intersect(ray)
+    assert np.all(np.array(si.is_valid()))
+    return si, scene
+
+
+def test_a_joined_body_takes_the_sea_s_detail_scaled_by_its_taper(variant, body_and_fields, rng):
+    # The coast inside the sea (JoinShading): s = s_body + τ_s (s_fields − s_sea). Where the body is
+    # the sea (its normals the sea's) and τ_s = 1 the shading is the sea's own; where τ_s = 0 it is
+    # the body's interpolated vertex normal; the foam is A·B_grid + C. Real mesh hits (the attributes
+    # are interpolated by Mitsuba). Float32 slopes of scale ≤ ~1: 100 × ROUNDOFF32.
+    import mitsuba as mi
+
+    scene, body, fields = body_and_fields
+    geometry = body.frame(0.75)
+    camera = (3.0, -2.0, 6.0)
+    points = rng.uniform(-20.0, 20.0, (500, 2)) + np.asarray(fields.origin)
+    hits = []
+
+    def normals(shading_fields):
+        si, keep = _mesh_hits(geometry, body, shading_fields, points)
+        shading = SeaShading(shading_fields, camera, 1e-3)
+        n, _, top = shading.normal(si)
+        assert np.all(np.array(top))
+        hits.append(keep)
+        return np.column_stack([np.array(c, float) for c in (n.x, n.y, n.z)]), si, shading
+
+    sea, _, _ = normals(fields)
+    same, _, _ = normals(_joined(fields, geometry, 1.0, 1.0, 0.0))
+    np.testing.assert_allclose(same, sea, atol=100 * ROUNDOFF32)
+    flat, si, _ = normals(_joined(fields, geometry, 0.0, 0.0, 0.0))
+    body_normal = np.column_stack([np.array(c, float) for c in (si.sh_frame.n.x, si.sh_frame.n.y, si.sh_frame.n.z)])
+    np.testing.assert_allclose(flat, body_normal, atol=100 * ROUNDOFF32)
+    assert np.max(np.abs(sea - body_normal)) > 0.05  # the fields do add detail to the vertex normals
+    # the camera hit's parallax too: the same fine surface where the body is the sea
+    def moved(shading_fields):
+        si, keep = _mesh_hits(geometry, body, shading_fields, points)
+        area, _, _ = SeaShading(shading_fields, camera, 1e-3)._area_at(si, True, parallax=True)
+        hits.append(keep)
+        return np.column_stack([np.array(c, float) for c in (area.x, area.y, area.z)])
+
+    np.testing.assert_allclose(moved(_joined(fields, geometry, 1.0, 1.0, 0.0, sea_positions=geometry.positions)),
+                               moved(fields), atol=100 * ROUNDOFF32)
+    # half the detail: the slope halfway between the body's and the fields'
+    half, _, _ = normals(_joined(fields, geometry, 0.5, 1.0, 0.0))
+    slope = [-n[:, :2] / n[:, 2:] for n in (half, sea, body_normal)]
+    np.testing.assert_allclose(slope[0], 0.5 * (slope[1] + slope[2]), atol=1e-3)  # det(I + τ(J − I)) only scales
+    # foam: A·B + C through the lace, as the sea's own foam grid scaled and offset
+    from dataclasses import replace
+
+    _, si, shading = normals(_joined(fields, geometry, 1.0, 0.5, 0.2))
+    foam = fields.foam
+    shifted = replace(fields, foam=replace(foam, fresh=0.5 * foam.fresh + 0.2, outside=0.5 * foam.outside + 0.2))
+    expected = np.array(SeaShading(shifted, camera, 1e-3).foam_at(si))
+    np.testing.assert_allclose(np.array(shading.foam_at(si)), expected, atol=10 * ROUNDOFF32 / LACE_EDGE)
     del mi
 
 

@@ -151,3 +151,31 @@ def test_where_only_one_side_is_wet_in_the_blend_the_depths_are_blended(body):
     scale = np.abs(slope[kept][both]).max()
     assert np.abs(slope[kept][both, 0] - zx[both]).max() <= 0.2 * scale
     assert np.abs(slope[kept][both, 1] - zy[both]).max() <= 0.2 * scale
+
+
+def test_field_shading_joins_the_sea_s_detail_as_the_geometry_joins_its_waves(body):
+    """With field shading (the default) the frame carries the sea's fields and how the body joins them
+    (JoinShading): where the body is the sea (w = 0, τ = 1) the sea's normals are the body's own (so a hit is
+    shaded as the open sea's, tests/render/test_sea_shading.py) and the foam is the sea's (A = 1, C = 0);
+    dry points take nothing; inside the domain the solver's white water is C ∈ [0, w]."""
+    frame = body.frame(0.0)
+    assert frame.shading is not None and body.sea_body.shades_from_fields
+    join = frame.shading.join
+    g = body.mesh
+    top = g.x.size
+    far = np.flatnonzero((g.w == 0) & (g.tau_s == 1) & (g.tau_l == 1))
+    # float32 unit normals recomputed from the same slopes: roundoff of their scale 1
+    np.testing.assert_allclose(join.sea_normals[far], frame.normals[far], atol=10 * np.finfo(np.float32).eps)
+    _, _, wet = body.surface(0.0)
+    wet_far = far[wet[far]]
+    assert wet_far.size > 0
+    assert np.all(join.short_taper[wet_far] == 1) and np.all(join.foam_scale[wet_far] == 1)
+    assert np.all(join.foam_offset[far] == 0)
+    dry = np.flatnonzero(~wet)
+    assert dry.size > 0
+    assert not np.any(join.short_taper[dry]) and not np.any(join.foam_scale[dry]) and not np.any(join.foam_offset[dry])
+    inside = np.flatnonzero(wet & (g.w > 0))
+    assert inside.size > 0
+    assert np.all(join.foam_offset[inside] >= 0) and np.all(join.foam_offset[inside] <= g.w[inside] + 1e-6)
+    np.testing.assert_allclose(join.foam_scale[:top][wet], ((1 - g.w) * g.tau_s)[wet], rtol=1e-6)
+    assert len(join.sea_normals) == len(frame.positions) == len(frame.shading.texcoords)
