@@ -135,8 +135,11 @@ JOIN_ATTRIBUTE = "vertex_join"
 #: Channels of :data:`~oceanrender.surface.frame.SHADING_CHANNELS` for the normal: s_x, s_y, J_xx − 1, J_yy − 1, J_xy.
 NORMAL_CHANNELS = (3, 4, 5, 6, 7)
 
+#: Channels for the surface's position: η, D_x, D_y [m].
+POSITION_CHANNELS = (0, 1, 2)
+
 #: Every channel: the surface's position and normal.
-ALL_CHANNELS = tuple(range(8))
+ALL_CHANNELS = POSITION_CHANNELS + NORMAL_CHANNELS
 
 #: Newton steps of the parallax [-].
 PARALLAX_ITERATIONS = 2
@@ -153,29 +156,37 @@ def pixel_angle(fov_deg: float, width: int) -> float:
     return 2.0 * math.tan(math.radians(float(fov_deg)) / 2.0) / int(width)
 
 
-def level_tables(cascades) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Flat field buffer and per-level (offset, resolution, spacing) of :class:`ShadingFields` cascades.
+def level_tables(cascades) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Flat field buffers and per-level (offset, resolution, spacing) of :class:`ShadingFields` cascades.
 
-    Level j of cascade c is entry ``c·M + j`` of the tables (M the largest level count);
-    entries of empty levels have resolution 0 (their fields are zero).
+    Returns (positions, normals, offsets, sizes, spacings): the levels' channels
+    :data:`POSITION_CHANNELS` (η, D_x, D_y: 3 a node) and :data:`NORMAL_CHANNELS` (5 a node), node
+    after node, in two buffers: the many hits that need only the normal read 20 bytes a node.
+    Level j of cascade c is entry ``c·M + j`` of the tables (M the largest level count), its first
+    node at ``offsets`` [nodes]; entries of empty levels have resolution 0 (their fields are zero).
     """
-    from ..surface.frame import SHADING_CHANNELS  # noqa: PLC0415
-
     width = max(c.level_count for c in cascades)
     offsets = np.zeros(len(cascades) * width, np.uint32)
     sizes = np.zeros(len(cascades) * width, np.uint32)
     spacings = np.ones(len(cascades) * width, np.float32)
-    chunks, start = [], 0
+    levels, start = [], 0
     for c, cascade in enumerate(cascades):
         for j, level in enumerate(cascade.levels):
             n = level.shape[0]
             offsets[c * width + j], sizes[c * width + j] = start, n
             spacings[c * width + j] = cascade.patch_size / n
-            chunks.append(np.ascontiguousarray(level, np.float32).reshape(-1))
-            start += n * n * SHADING_CHANNELS
-    if start >= 2**32:
+            levels.append(level.reshape(n * n, -1))
+            start += n * n
+    if start * len(NORMAL_CHANNELS) >= 2**32:
         raise ValueError("the shading fields exceed 2³² values")
-    return np.concatenate(chunks), offsets, sizes, spacings
+    positions = np.empty((start, len(POSITION_CHANNELS)), np.float32)
+    normals = np.empty((start, len(NORMAL_CHANNELS)), np.float32)
+    row = 0
+    for level in levels:
+        positions[row: row + len(level)] = level[:, POSITION_CHANNELS[0]: POSITION_CHANNELS[-1] + 1]
+        normals[row: row + len(level)] = level[:, NORMAL_CHANNELS[0]: NORMAL_CHANNELS[-1] + 1]
+        row += len(level)
+    return positions.reshape(-1), normals.reshape(-1), offsets, sizes, spacings
 
 
 def lace_weight(fresh, x, y, lace, n: int, size, active=True):
@@ -221,7 +232,8 @@ class SeaShading:
         self.band_tops = [c.band_top for c in fields.cascades]
         self.counts = [c.level_count for c in fields.cascades]
         self.patch_sizes = [c.patch_size for c in fields.cascades]
-        _, offsets, sizes, spacings = level_tables(fields.cascades)
+        _, _, offsets, sizes, spacings = level_tables(fields.cascades)
+        #: the first node of each level [nodes]
         self.offsets, self.sizes, self.spacings = mi.UInt32(offsets), mi.UInt32(sizes), mi.Float(spacings)
         self.log_spacing_0 = float(np.log(fields.spacing[0]))
         self.log_spacing_step = float(np.log(fields.spacing[1] / fields.spacing[0]))
@@ -245,14 +257,15 @@ class SeaShading:
             raise ValueError("a frame's shading fields must keep the first frame's cascades and levels")
         if (fields.join is not None) != self.join:
             raise ValueError("a frame's shading fields must keep the first frame's join (or its absence)")
-        values = level_tables(fields.cascades)[0]
+        positions, normals = level_tables(fields.cascades)[:2]
         spacing = np.asarray(fields.spacing, float)
         if not np.allclose(np.diff(np.log(spacing)), self.log_spacing_step) or spacing.size != self.table_size:
             raise ValueError("the α table must keep the first frame's log-spaced shading spacings")
-        self.values = mi.Float(values)
+        self.position_values, self.normal_values = mi.Float(positions), mi.Float(normals)
+        dr.make_opaque(self.position_values, self.normal_values)
         self.alpha = mi.Float(np.asarray(fields.alpha, np.float32))
         self.origin = mi.Point2f(float(fields.origin[0]), float(fields.origin[1]))
-        dr.make_opaque(self.values, self.alpha, self.origin)
+        dr.make_opaque(self.alpha, self.origin)
         foam = fields.foam
         if (foam is None) != (getattr(self, "foam_layout", None) is None) and hasattr(self, "foam_layout"):
             raise ValueError("a frame's shading fields must keep the first frame's foam grid")
@@ -322,8 +335,6 @@ class SeaShading:
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        from ..surface.frame import SHADING_CHANNELS  # noqa: PLC0415
-
         n = dr.gather(mi.UInt32, self.sizes, entry, active)
         active = active & (n > 0) & (weight > 0)
         offset = dr.gather(mi.UInt32, self.offsets, entry, active)
@@ -340,12 +351,15 @@ class SeaShading:
         j0 = dr.minimum(mi.UInt32(j0), dr.maximum(n, 1) - 1)
         i1 = dr.select(i0 + 1 >= n, 0, i0 + 1)
         j1 = dr.select(j0 + 1 >= n, 0, j0 + 1)
+        # each channel from its buffer: positions (3 a node) or normals (5 a node)
+        reads = [(self.position_values, len(POSITION_CHANNELS), channel) if channel in POSITION_CHANNELS else
+                 (self.normal_values, len(NORMAL_CHANNELS), channel - len(POSITION_CHANNELS)) for channel in channels]
         out = [mi.Float(0.0) for _ in channels]
         for (jj, ii, w) in ((j0, i0, (1 - fx) * (1 - fy)), (j0, i1, fx * (1 - fy)),
                             (j1, i0, (1 - fx) * fy), (j1, i1, fx * fy)):
-            base = offset + (jj * n + ii) * SHADING_CHANNELS
-            for k, channel in enumerate(channels):
-                out[k] += w * dr.gather(mi.Float, self.values, base + channel, active)
+            node = offset + jj * n + ii
+            for k, (source, stride, channel) in enumerate(reads):
+                out[k] += w * dr.gather(mi.Float, source, node * stride + channel, active)
         return [dr.select(active, weight * o, 0.0) for o in out]
 
     def join_at(self, si, active):

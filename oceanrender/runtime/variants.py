@@ -183,6 +183,22 @@ def candidate_variants(requested: str = "auto") -> tuple[str, ...]:
     return (requested,)
 
 
+def steady_kernels() -> None:
+    """Turn off Dr.Jit's packet memory operations, so a frame's kernels do not change with its buffers.
+
+    With ``JitFlag.PacketOps`` Dr.Jit may read a gather of adjacent values (the mesh's
+    two texture coordinates of a vertex) as one packet, and whether it does varied between
+    two uploads of same-sized buffers (measured: 2 of 6 re-uploads of a mesh's texture
+    coordinates gave the other kernel). The sea's field shading uploads its rest positions as
+    texture coordinates every frame, so the render kernel changed at random between frames
+    and was compiled again (26 s at 720p; a flaky no-recompile test). Without packets every
+    frame's kernel is the same; the render time did not change measurably.
+    """
+    import drjit as dr  # noqa: PLC0415
+
+    dr.set_flag(dr.JitFlag.PacketOps, False)
+
+
 def activate_variant(requested: str = "auto") -> RuntimeInfo:
     """Pick, verify and activate the Mitsuba variant.
 
@@ -225,5 +241,6 @@ def activate_variant(requested: str = "auto") -> RuntimeInfo:
         if variant.startswith("llvm") and llvm:
             os.environ["DRJIT_LIBLLVM_PATH"] = llvm
         mi.set_variant(variant)
+        steady_kernels()
         return RuntimeInfo(variant=variant, llvm_library=llvm if variant.startswith("llvm") else None, tried=tuple(tried))
     raise VariantError("no usable Mitsuba variant: " + "; ".join(f"{v}: {why}" for v, why in tried))

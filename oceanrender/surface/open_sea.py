@@ -482,7 +482,10 @@ class WaterBody:
             stacks = []
             for ocean in levels.oceans[:-1]:
                 f = ocean.fields(float(t))
-                stacks.append(np.stack([sampled_field(f, name) for name in SHADING_NAMES], axis=-1).astype(np.float32))
+                stack = np.empty((*f.height.shape, len(SHADING_NAMES)), np.float32)  # filled per channel: no float64 copy
+                for k, name in enumerate(SHADING_NAMES):
+                    stack[..., k] = sampled_field(f, name)
+                stacks.append(stack)
             cascades.append(ShadingCascade(float(levels.grid.patch_size), float(levels.band_top), tuple(stacks)))
         coords, origin = self.texcoords(t, vertex_count)
         return ShadingFields(tuple(cascades), SHADING_SPACINGS, self.shading_alpha, origin, coords,

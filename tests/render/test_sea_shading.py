@@ -50,17 +50,19 @@ def body_and_fields():
 
 def test_level_tables_pack_every_level(body_and_fields):
     _, body, fields = body_and_fields
-    values, offsets, sizes, spacings = level_tables(fields.cascades)
-    total = sum(level.size for c in fields.cascades for level in c.levels)
-    assert values.size == total
+    positions, normals, offsets, sizes, spacings = level_tables(fields.cascades)
+    total = sum(level.shape[0] * level.shape[1] for c in fields.cascades for level in c.levels)  # nodes
+    assert positions.size == 3 * total and normals.size == 5 * total
     width = max(c.level_count for c in fields.cascades)
     for c, cascade in enumerate(fields.cascades):
         for j, level in enumerate(cascade.levels):
             n = level.shape[0]
-            assert sizes[c * width + j] == n
-            assert spacings[c * width + j] == pytest.approx(cascade.patch_size / n)
-            np.testing.assert_array_equal(values[offsets[c * width + j]: offsets[c * width + j] + level.size],
-                                          level.ravel())
+            entry, nodes = c * width + j, level.reshape(n * n, -1)
+            assert sizes[entry] == n
+            assert spacings[entry] == pytest.approx(cascade.patch_size / n)
+            first = int(offsets[entry])
+            np.testing.assert_array_equal(positions[3 * first: 3 * (first + n * n)], nodes[:, :3].ravel())
+            np.testing.assert_array_equal(normals[5 * first: 5 * (first + n * n)], nodes[:, 3:].ravel())
         assert sizes[c * width + cascade.level_count - 1] == 0  # the empty last level
 
 

@@ -182,7 +182,10 @@ def test_shading_fields_carry_the_levels_and_rest_positions():
     for cascade, levels in zip(fields.cascades, body.sea.levels):
         assert cascade.level_count == levels.count and cascade.band_top == levels.band_top
         f = levels.oceans[0].fields(0.5)
-        np.testing.assert_array_equal(cascade.levels[0][..., 0], f.slope_x.astype(np.float32))
+        # the channels of SHADING_CHANNELS: height, displacement, slopes, displacement gradient − identity
+        for k, value in enumerate((f.height, f.displacement_x, f.displacement_y, f.slope_x, f.slope_y,
+                                   f.jacobian_xx - 1, f.jacobian_yy - 1, f.jacobian_xy)):
+            np.testing.assert_array_equal(cascade.levels[0][..., k], np.asarray(value).astype(np.float32))
     # texture coordinates: the top vertices' rest positions relative to the origin (the grid's centre)
     grid = body.grid_at(0.5)
     top = len(grid.points)
