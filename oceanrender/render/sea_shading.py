@@ -573,7 +573,7 @@ class SeaShading:
         if parallax:
             # The hit is on the fine surface, sampled as the ray meets it: weight 1. Where the Newton
             # steps end on a facet turned away from the ray (it crossed a crest it grazes: 23 % of the
-            # hits just below the horizon of the default frame, < 1 % nearer than 100 m), the ray meets
+            # hits just below the horizon of the default frame, < 1 % in the lower half of the frame), the ray meets
             # that crest's near side, which the fine surface does not resolve: the mesh's normal is taken.
             hidden = top & (dr.dot(wi, area) * side <= 0)
             area = dr.select(hidden, mi.Vector3f(si.sh_frame.n), area)
