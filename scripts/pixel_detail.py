@@ -237,13 +237,12 @@ def main() -> None:
                   "frequency_cy_px": freq.round(4).tolist(), "power_brute": p_ref.tolist(),
                   "power_ratio_brute_seeds": floor.round(3).tolist(),
                   "power_worst_brute_seeds": float(np.max(np.abs(floor - 1.0)))}
-        strip = []
+        images = {}
         for mode in builds:
             xyz = np.mean(renders[mode], axis=0)
             rgb = seq.vision.apply(xyz, white, adaptation)
-            image = encode_sRGB_8bit(np.clip(rgb, 0, 1))
-            iio.imwrite(out / f"{case}_{mode}.png", image)
-            strip.append(image)
+            images[mode] = encode_sRGB_8bit(np.clip(rgb, 0, 1))
+            iio.imwrite(out / f"{case}_{mode}.png", images[mode])
             result[f"seconds_{mode}"] = renders[mode + "_seconds"]
             result[f"mean_Y_{mode}"] = float(xyz[..., 1].mean())
             if mode == "brute":
@@ -257,10 +256,9 @@ def main() -> None:
             result[f"glitter_{mode}"] = float(count)
             result[f"glitter_ratio_{mode}"] = float(count / count_ref) if count_ref else float("nan")
         # the strip of the docs: vertex | fields | brute, 4 px white between
-        order = [m for m in ("vertex", "fields", "brute") if m in builds]
-        images = [strip[list(builds).index(m)] for m in order]
-        gap = np.full((images[0].shape[0], 4, 3), 255, np.uint8)
-        iio.imwrite(out / f"{case}.png", np.hstack([part for image in images for part in (image, gap)][:-1]))
+        parts = [images[m] for m in ("vertex", "fields", "brute") if m in images]
+        gap = np.full((parts[0].shape[0], 4, 3), 255, np.uint8)
+        iio.imwrite(out / f"{case}.png", np.hstack([piece for part in parts for piece in (part, gap)][:-1]))
         print(json.dumps(result), flush=True)
 
 

@@ -96,8 +96,9 @@ import math
 
 import numpy as np
 
-__all__ = ["SHADING_SPACING_PER_FOOTPRINT", "MIN_COSINE", "SEA_NORMAL_ATTRIBUTE", "JOIN_ATTRIBUTE", "pixel_angle", "SeaShading", "sea_surface", "sea_roughness",
-           "sea_foam", "lace_foam", "lace_weight"]
+__all__ = ["SHADING_SPACING_PER_FOOTPRINT", "MIN_COSINE", "SEA_NORMAL_ATTRIBUTE", "SEA_POSITION_ATTRIBUTE",
+           "JOIN_ATTRIBUTE", "pixel_angle", "SeaShading", "sea_surface", "sea_roughness", "sea_foam", "lace_foam",
+           "lace_weight"]
 
 #: Shading spacing Δ per footprint w [-]: waves fade out around λ = 4Δ = 2w, the pixel's Nyquist wavelength.
 SHADING_SPACING_PER_FOOTPRINT = 0.5
@@ -231,7 +232,6 @@ class SeaShading:
         self.width = max(c.level_count for c in fields.cascades)
         self.band_tops = [c.band_top for c in fields.cascades]
         self.counts = [c.level_count for c in fields.cascades]
-        self.patch_sizes = [c.patch_size for c in fields.cascades]
         _, _, offsets, sizes, spacings = level_tables(fields.cascades)
         #: the first node of each level [nodes]
         self.offsets, self.sizes, self.spacings = mi.UInt32(offsets), mi.UInt32(sizes), mi.Float(spacings)
@@ -385,7 +385,7 @@ class SeaShading:
                 total = [a + b for a, b in zip(total, part)]
         return total
 
-    def parallax(self, si, rest, spacing, active):
+    def parallax(self, si, rest, spacing, active, tau=None):
         """The rest position [m] where the hit's ray meets the fields' surface, from the mesh's hit at
         rest position ``rest`` [m] (parallax mapping by Newton's method).
 
@@ -399,14 +399,14 @@ class SeaShading:
         channels (position and its derivatives: Tessendorf 2001 for ∂P/∂x₀), land x where the ray
         meets the fine surface, to second order per step (Kaneko et al. 2001 take one step along
         a fixed tangent plane; Policarpo, Oliveira & Comba 2005 search along the ray). The whole
-        move is capped at :data:`MAX_PARALLAX_STEPS` shading spacings (grazing rays).
+        move is capped at :data:`MAX_PARALLAX_STEPS` shading spacings (grazing rays). ``tau``: τ_s of
+        a joined body at the hit (:meth:`join_at`), None for the sea itself.
         """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
         d = -si.to_world(si.wi)  # the ray's direction
-        if self.join:  # the body's own surface plus τ_s × the fields' offset from the sea's own mesh
-            tau, _, _ = self.join_at(si, active)
+        if tau is not None:  # the body's own surface plus τ_s × the fields' offset from the sea's own mesh
             sea = si.shape.eval_attribute_3(SEA_POSITION_ATTRIBUTE, si, active)
             sea = mi.Vector3f(sea[0], sea[1], sea[2])
         else:
@@ -491,26 +491,26 @@ class SeaShading:
         top = mi.Bool(active) & self.on_top(si)
         spacing = self.spacing(si)
         rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
+        tau = self.join_at(si, top)[0] if self.join else None  # one attribute read for the whole hit
         if parallax:
-            rest = self.parallax(si, rest, spacing, top)
+            rest = self.parallax(si, rest, spacing, top, tau)
         fields = self.fields_at(rest, spacing, top)
         if self.join:
-            return self._joined_area(si, fields, top), spacing, top
+            return self._joined_area(si, fields, top, tau), spacing, top
         return self._area_normal(*fields), spacing, top
 
-    def _joined_area(self, si, fields, top):
+    def _joined_area(self, si, fields, top, tau):
         """The vector area per unit rest area [-] of a joined body's hit (:class:`JoinShading`).
 
         Slope s = s_body + τ_s (s_fields − s_sea) (s of the body's interpolated vertex normal, of
         the fields' normal at the footprint, of the sea's own interpolated vertex normal), and
         the area element det(I + τ_s (J − I)) of the sea's horizontal displacement scaled as the
-        body scales its short waves: (−s_x, −s_y, 1) times it. With τ_s = 1 and s_body = s_sea it is
-        :meth:`_area_normal` of the fields exactly.
+        body scales its short waves: (−s_x, −s_y, 1) times it (``tau``: τ_s at the hit). With τ_s = 1
+        and s_body = s_sea it is :meth:`_area_normal` of the fields exactly.
         """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        tau, _, _ = self.join_at(si, top)
         sea = si.shape.eval_attribute_3(SEA_NORMAL_ATTRIBUTE, si, top)
         sea = mi.Vector3f(sea[0], sea[1], sea[2])
 
@@ -569,16 +569,16 @@ class SeaShading:
         wi = si.to_world(si.wi)
         mesh = dr.dot(wi, dr.cross(si.dp_du, si.dp_dv))
         side = dr.select(mesh >= 0, 1.0, -1.0)
-        weight = dr.maximum(dr.dot(wi, area) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
         if parallax:
             # The hit is on the fine surface, sampled as the ray meets it: weight 1. Where the Newton
             # steps end on a facet turned away from the ray (it crossed a crest it grazes: 23 % of the
-            # hits just below the horizon of the default frame, < 1 % in the lower half of the frame), the ray meets
-            # that crest's near side, which the fine surface does not resolve: the mesh's normal is taken.
+            # hits just below the horizon of the default frame, < 1 % in the lower half of the frame), the ray
+            # meets that crest's near side, which the fine surface does not resolve: the mesh's normal is taken.
             hidden = top & (dr.dot(wi, area) * side <= 0)
             area = dr.select(hidden, mi.Vector3f(si.sh_frame.n), area)
             weight = mi.Float(1.0)
         else:
+            weight = dr.maximum(dr.dot(wi, area) * side, 0.0) / dr.maximum(dr.abs(mesh), 1e-12)
             weight = dr.select(top, dr.minimum(weight, MAX_AREA_WEIGHT), 1.0)
         return dr.normalize(area), weight, top
 

@@ -331,22 +331,24 @@ class CoastInSea:
         normals /= np.linalg.norm(normals, axis=1, keepdims=True)
         positions, normals = radial_body_vertices(self.grid, disp, normals, self.scene.water.depth,
                                                   far_radius=self.far_radius())
-        foam = self.vertex_foam(t, wet, len(positions)) if self.scene.foam.enabled else None
+        solver_fresh = self.coast.foam_state(t)[1] if self.scene.foam.enabled else None
+        foam = self.vertex_foam(t, wet, len(positions), solver_fresh) if solver_fresh is not None else None
         roughness = self.vertex_roughness if self.per_vertex_roughness else None
         shading = None
         if self.sea_body.shades_from_fields:
             shading = replace(self.sea_body.shading_fields(t, len(positions)),
-                              join=self.join_shading(t, sea, positions, normals, wet))
+                              join=self.join_shading(sea, positions, normals, wet, solver_fresh))
         return FrameGeometry(positions, normals, foam, roughness, shading, scene_foam_lace(self.scene))
 
-    def join_shading(self, t: float, sea, positions: NDArray, normals: NDArray, wet: NDArray) -> JoinShading:
+    def join_shading(self, sea, positions: NDArray, normals: NDArray, wet: NDArray,
+                     solver_fresh: NDArray | None) -> JoinShading:
         """How a hit takes the sea's detail (:class:`~.frame.JoinShading`; docs/pixel_detail.md).
 
         ``sea``: the FFT sea at the rest points (its displacement [m] and unit normals),
         ``positions`` and ``normals`` the body's vertices (all of them), ``wet`` the rest points
-        under water. On the surface
-        τ_s of the join, the sea's whitecaps weighted A = (1 − w) τ_s and the solver's white
-        water C = w B_S (the blend of :meth:`vertex_foam`), all 0 where dry; on the far ring
+        under water, ``solver_fresh`` the solver's fresh white water B_S on its cells (None: no
+        foam). On the surface τ_s of the join and the foam terms (A, C) of :meth:`foam_terms`,
+        all 0 where dry; on the far ring
         τ_s = A = 1 (the sea itself); 0 on the skirt and bottom (never field-shaded).
         """
         g = self.mesh
@@ -360,29 +362,32 @@ class CoastInSea:
         scale = np.zeros(count, np.float32)
         offset = np.zeros(count, np.float32)
         tau[:top] = np.where(wet, g.tau_s, 0.0)
-        scale[:top] = np.where(wet, (1.0 - g.w) * g.tau_s, 0.0)
+        scale[:top], offset[:top] = self.foam_terms(wet, solver_fresh)
         tau[top: top + self.grid.segments] = scale[top: top + self.grid.segments] = 1.0
-        inside = np.flatnonzero((g.w > 0) & wet)
-        if inside.size and self.scene.foam.enabled:
-            _, swe = self.coast.foam_state(t)
-            offset[inside] = g.w[inside] * grid_sample(swe, self.domain, self.coastal.spacing, g.x[inside],
-                                                       g.y[inside])
         return JoinShading(own, own_positions, tau, scale, offset)
 
-    def vertex_foam(self, t: float, wet: NDArray, count: int) -> NDArray[np.float32]:
-        """Fresh-foam weight per vertex [-]: the solver's white water inside, the sea's whitecaps outside, blended by w."""
+    def foam_terms(self, wet: NDArray, solver_fresh: NDArray | None) -> tuple[NDArray, NDArray]:
+        """(A, C) per rest point [-]: the fresh foam there is A·B_sea + C, B_sea the sea's whitecaps.
+
+        A = (1 − w) τ_s (the sea's foam fades with the solver's weight and the short waves'
+        depth taper), C = w B_S (the solver's white water ``solver_fresh`` on its cells, bilinear;
+        None: no foam, C = 0); both 0 where dry (``wet`` False).
+        """
         g = self.mesh
+        scale = np.where(wet, (1.0 - g.w) * g.tau_s, 0.0)
+        offset = np.zeros(wet.size)
+        inside = np.flatnonzero((g.w > 0) & wet)
+        if inside.size and solver_fresh is not None:
+            offset[inside] = g.w[inside] * grid_sample(solver_fresh, self.domain, self.coastal.spacing, g.x[inside],
+                                                       g.y[inside])
+        return scale, offset
+
+    def vertex_foam(self, t: float, wet: NDArray, count: int, solver_fresh: NDArray) -> NDArray[np.float32]:
+        """Fresh-foam weight per vertex [-]: the solver's white water inside, the sea's whitecaps outside, blended by w
+        (:meth:`foam_terms`; ``solver_fresh`` the solver's B_S at t [s])."""
         fresh = np.array(self.sea_body.vertex_foam(t, count)[1], dtype=np.float64)
-        top = wet.size
-        fresh[:top] *= g.tau_s
-        inside = np.flatnonzero(g.w > 0)
-        if inside.size:
-            _, swe = self.coast.foam_state(t)
-            c = self.coastal
-            w = g.w[inside]
-            fresh[inside] = (1 - w) * fresh[inside] + w * grid_sample(swe, self.domain, c.spacing, g.x[inside],
-                                                                      g.y[inside])
-        fresh[:top][~wet] = 0.0
+        scale, offset = self.foam_terms(wet, solver_fresh)
+        fresh[: wet.size] = scale * fresh[: wet.size] + offset
         return fresh.astype(np.float32)
 
     @cached_property
