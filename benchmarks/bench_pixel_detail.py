@@ -57,11 +57,14 @@ def main() -> None:
     print(f"# open_ocean: {args.width}x{args.height}, {base.output.spp} spp, variant {runtime.variant}, "
           f"{platform.processor() or platform.machine()}; {args.frames} frames timed per mode after one warm-up")
     print()
-    print("| surface_shading | set-up [s] | first frame (JIT, foam history) [s] | geometry [s/frame] | render [s/frame] "
+    print("| surface_shading | set-up [s] | first frame (JIT, foam history) [s] | meter (with the frame's geometry) "
+          "[s/frame] | geometry [s/frame] | update [s/frame] | render [s/frame] | vision, files [s/frame] "
           "| frame, wall [s] |")
-    print("|---|---:|---:|---:|---:|---:|")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for mode, (setup, first, per, wall) in rows.items():
-        print(f"| {mode} | {setup:.1f} | {first:.1f} | {per['geometry']:.2f} | {per['render']:.2f} | {wall:.2f} |")
+        rest = per["denoise"] + per["vision"] + per["write"]
+        print(f"| {mode} | {setup:.1f} | {first:.1f} | {per['meter']:.2f} | {per['geometry']:.2f} "
+              f"| {per['update']:.2f} | {per['render']:.2f} | {rest:.2f} | {wall:.2f} |")
     ratio = rows["fields"][3] / rows["vertex"][3]
     print()
     print(f"fields / vertex, wall per frame: **{ratio:.2f}×** (goal ≤ 1.3×); render alone: "

@@ -285,8 +285,10 @@ def _define_class() -> type:
                 return on
 
             sun = {} if self.sun is None else {"eta": self.water_ior, "alpha": self.sun_lobe_alpha}
+            # the sea shaded from its fields (:mod:`.sea_shading`): one shading frame per hit
+            surface = bsdfs[0] if len(bsdfs) == 1 and hasattr(bsdfs[0], "prepared") else None
             return trace_path(scene, sampler, mi.Ray3f(ray), medium, active, is_water_surface=is_water_surface,
-                              sun=self.sun, max_depth=depth, rr_depth=rr_depth, last=last, **sun)
+                              sun=self.sun, max_depth=depth, rr_depth=rr_depth, last=last, water_surface=surface, **sun)
 
         def _from_camera_in_water(self, scene, sampler, ray, medium, active):
             """A camera inside the water body (its sensor's ``medium``): the whole path by ``trace_path``.

@@ -45,7 +45,11 @@ CPU (``llvm``) and GPU (``cuda``) variants (and ``scalar``):
    reflected rays meeting another wave) the BSDF's values are scaled by the ratio
    of the fields' projected area to the mesh's (:meth:`SeaShading.shading_frame`),
    so the normals a ray averages are the visible ones (Heitz 2014): they are many
-   per camera sample, and a parallax there costs more than it changes.
+   per camera sample, and a parallax there costs more than it changes. A path's hit on
+   the sea is prepared once (:meth:`SeaSurfaceBSDF.prepared`: frame, α and foam) for all
+   of that hit's BSDF calls, and each level of each cascade is read only in packets where
+   some lane reads it with a weight (symbolic branches): the lookups at these many hits
+   were the field shading's whole cost (docs/pixel_detail.md, "Cost").
 6. **Foam.** The fresh-foam coverage B of the foam's own polar grid at the rest
    position (:meth:`SeaShading.foam_at`), drawn through a lace tile
    (:func:`lace_weight`): on average the fraction B of the surface, as a sheet
@@ -379,9 +383,17 @@ class SeaShading:
             s = dr.clip(dr.log2(top / k_f), 0.0, count - 1.0)
             low = dr.floor(s)
             frac = s - low
-            entry = mi.UInt32(c * self.width) + mi.UInt32(low)
-            for e, w in ((entry, 1.0 - frac), (entry + 1, frac)):
-                part = self._level(e, rest.x, rest.y, w, active & (mi.UInt32(low) + (e - entry) < count), channels)
+            level = mi.UInt32(low)
+            entry = mi.UInt32(c * self.width) + level
+            for step, w in ((0, 1.0 - frac), (1, frac)):
+                # the last level is empty (zero): only levels below it, with weight, are read; and only in
+                # packets of lanes where some lane reads it (a symbolic branch: far hits skip the fine
+                # cascades, near ones the second level of the coarse cascades)
+                on = mi.Bool(active) & (level + step < count - 1) & (w > 0)
+                part = dr.if_stmt(
+                    (entry + step, rest.x, rest.y, w, on), on,
+                    lambda e, x, y, w, on: self._level(e, x, y, w, on, channels),
+                    lambda e, x, y, w, on: [mi.Float(0.0) for _ in channels])
                 total = [a + b for a, b in zip(total, part)]
         return total
 
@@ -601,7 +613,18 @@ def _define_classes() -> tuple[type, type, type, type]:
     import mitsuba as mi  # noqa: PLC0415
 
     class _ScalarTexture(mi.Texture):
-        """A one-channel texture defined by ``eval_1`` (the spectrum is that value at every λ)."""
+        """A one-channel texture defined by ``compute`` (the spectrum is that value at every λ).
+
+        :class:`SeaSurfaceBSDF` evaluates it once per hit and sets :attr:`current` while its
+        nested BSDF is traced at that hit, so the nested BSDF's several reads of it (each of
+        ``sample``, ``eval``, ``pdf``) are that one value, not each its own evaluation.
+        """
+
+        #: The value at the hit whose BSDF is being traced, or None (then :meth:`compute`).
+        current = None
+
+        def eval_1(self, si, active=True):
+            return self.compute(si, active) if self.current is None else self.current
 
         def eval(self, si, active=True):
             return mi.UnpolarizedSpectrum(self.eval_1(si, active))
@@ -619,7 +642,7 @@ def _define_classes() -> tuple[type, type, type, type]:
             self.shading, self.fallback = shading, fallback
             return self
 
-        def eval_1(self, si, active=True):
+        def compute(self, si, active=True):
             alpha = self.shading.alpha_at(self.shading.spacing(si))
             return dr.select(self.shading.on_top(si), alpha, self.fallback.eval_1(si, active))
 
@@ -633,7 +656,7 @@ def _define_classes() -> tuple[type, type, type, type]:
             self.shading = shading
             return self
 
-        def eval_1(self, si, active=True):
+        def compute(self, si, active=True):
             return self.shading.foam_at(si, active)
 
         def mean(self):
@@ -649,7 +672,7 @@ def _define_classes() -> tuple[type, type, type, type]:
             dr.make_opaque(self.lace)
             return self
 
-        def eval_1(self, si, active=True):
+        def compute(self, si, active=True):
             return lace_weight(self.nested.eval_1(si, active), si.p.x, si.p.y, self.lace, self.n, self.size, active)
 
         def mean(self):
@@ -676,47 +699,78 @@ def _define_classes() -> tuple[type, type, type, type]:
             self.nested = None
             self.shading = None
 
-        def attach(self, nested, shading: SeaShading) -> "SeaSurfaceBSDF":
-            self.nested, self.shading = nested, shading
+        def attach(self, nested, shading: SeaShading, textures=()) -> "SeaSurfaceBSDF":
+            """``textures``: the :class:`_ScalarTexture` objects inside ``nested``, evaluated once per hit."""
+            self.nested, self.shading, self.textures = nested, shading, tuple(textures)
             self.m_flags = nested.flags()
             self.m_components = [nested.flags(i) for i in range(nested.component_count())]
             return self
 
-        def _perturbed(self, si, active, parallax=False):
-            n, weight, top = self.shading.shading_frame(si, active, parallax)
+        def _perturbed(self, si, active, parallax=False, branch=False):
+            """(the hit with the fields' shading frame, visible-area weight, the textures' values) at ``si``.
+
+            ``branch``: evaluated in a symbolic branch, only in packets where some lane is
+            ``active`` (a path's hits, most of which are not on the water)."""
+
+            def evaluate(si, active):
+                n, weight, _ = self.shading.shading_frame(si, active, parallax)
+                return n, weight, [texture.compute(si, active) for texture in self.textures]
+
+            active = mi.Bool(active)
+            if branch:
+                n, weight, values = dr.if_stmt(
+                    (si, active), active, evaluate,
+                    lambda si, active: (mi.Vector3f(0.0, 0.0, 1.0), mi.Float(1.0),
+                                        [mi.Float(0.0) for _ in self.textures]))
+            else:
+                n, weight, values = evaluate(si, active)
+            top = active & self.shading.on_top(si)
             perturbed = mi.SurfaceInteraction3f(si)
             frame = mi.Frame3f(n)
             perturbed.sh_frame = mi.Frame3f(dr.select(top, frame.s, si.sh_frame.s),
                                             dr.select(top, frame.t, si.sh_frame.t),
                                             dr.select(top, frame.n, si.sh_frame.n))
             perturbed.wi = perturbed.to_local(si.to_world(si.wi))
-            return perturbed, weight
+            return perturbed, weight, values
 
-        def prepared(self, si, active=True):
+        def _traced(self, values, call):
+            """``call()`` (a method of the nested BSDF) with the textures' values at the hit set."""
+            for texture, value in zip(self.textures, values):
+                texture.current = value
+            try:
+                return call()
+            finally:
+                for texture in self.textures:
+                    texture.current = None
+
+        def prepared(self, si, active=True, parallax=True, branch=False):
             """This BSDF at hit ``si`` with its shading frame evaluated once: an object with the
             methods ``sample``, ``eval``, ``pdf``, ``eval_pdf`` of a BSDF at that hit (the
-            ``split`` integrator's camera hit calls four of them on the same hit)."""
-            return _Prepared(self, si, *self._perturbed(si, active, parallax=True))
+            ``split`` integrator's camera hit calls four of them on the same hit, with ``parallax``;
+            a path's later hits on the surface three, without: :func:`~.underwater.trace_path`)."""
+            return _Prepared(self, si, *self._perturbed(si, active, parallax, branch))
 
-        def _sample(self, ctx, si, perturbed, area, sample1, sample2, active):
-            bs, weight = self.nested.sample(ctx, perturbed, sample1, sample2, active)
+        def _sample(self, ctx, si, perturbed, area, values, sample1, sample2, active):
+            bs, weight = self._traced(values, lambda: self.nested.sample(ctx, perturbed, sample1, sample2, active))
             wo_world = perturbed.to_world(bs.wo)
             bs.wo = si.to_local(wo_world)
             return bs, dr.select(self._consistent(si, perturbed, wo_world), weight * area, 0.0)
 
-        def _eval(self, ctx, si, perturbed, area, wo, active):
+        def _eval(self, ctx, si, perturbed, area, values, wo, active):
             wo_world = si.to_world(wo)
-            value = self.nested.eval(ctx, perturbed, perturbed.to_local(wo_world), active)
+            value = self._traced(values, lambda: self.nested.eval(ctx, perturbed, perturbed.to_local(wo_world),
+                                                                  active))
             return dr.select(self._consistent(si, perturbed, wo_world), value * area, 0.0)
 
-        def _pdf(self, ctx, si, perturbed, wo, active):
+        def _pdf(self, ctx, si, perturbed, values, wo, active):
             wo_world = si.to_world(wo)
-            value = self.nested.pdf(ctx, perturbed, perturbed.to_local(wo_world), active)
+            value = self._traced(values, lambda: self.nested.pdf(ctx, perturbed, perturbed.to_local(wo_world), active))
             return dr.select(self._consistent(si, perturbed, wo_world), value, 0.0)
 
-        def _eval_pdf(self, ctx, si, perturbed, area, wo, active):
+        def _eval_pdf(self, ctx, si, perturbed, area, values, wo, active):
             wo_world = si.to_world(wo)
-            value, pdf = self.nested.eval_pdf(ctx, perturbed, perturbed.to_local(wo_world), active)
+            value, pdf = self._traced(values, lambda: self.nested.eval_pdf(ctx, perturbed,
+                                                                           perturbed.to_local(wo_world), active))
             ok = self._consistent(si, perturbed, wo_world)
             return dr.select(ok, value * area, 0.0), dr.select(ok, pdf, 0.0)
 
@@ -727,7 +781,8 @@ def _define_classes() -> tuple[type, type, type, type]:
             return self._eval(ctx, si, *self._perturbed(si, active), wo, active)
 
         def pdf(self, ctx, si, wo, active=True):
-            return self._pdf(ctx, si, self._perturbed(si, active)[0], wo, active)
+            perturbed, _, values = self._perturbed(si, active)
+            return self._pdf(ctx, si, perturbed, values, wo, active)
 
         def eval_pdf(self, ctx, si, wo, active=True):
             return self._eval_pdf(ctx, si, *self._perturbed(si, active), wo, active)
@@ -752,23 +807,23 @@ def _define_classes() -> tuple[type, type, type, type]:
     class _Prepared:
         """:meth:`SeaSurfaceBSDF.prepared`: the BSDF's methods at one hit, its shading frame computed once."""
 
-        def __init__(self, bsdf, si, perturbed, area):
-            self.bsdf, self.si, self.perturbed, self.area = bsdf, si, perturbed, area
+        def __init__(self, bsdf, si, perturbed, area, values):
+            self.bsdf, self.si, self.perturbed, self.area, self.values = bsdf, si, perturbed, area, values
 
         def flags(self):
             return self.bsdf.flags()
 
         def sample(self, ctx, si, sample1, sample2, active=True):
-            return self.bsdf._sample(ctx, si, self.perturbed, self.area, sample1, sample2, active)
+            return self.bsdf._sample(ctx, si, self.perturbed, self.area, self.values, sample1, sample2, active)
 
         def eval(self, ctx, si, wo, active=True):
-            return self.bsdf._eval(ctx, si, self.perturbed, self.area, wo, active)
+            return self.bsdf._eval(ctx, si, self.perturbed, self.area, self.values, wo, active)
 
         def pdf(self, ctx, si, wo, active=True):
-            return self.bsdf._pdf(ctx, si, self.perturbed, wo, active)
+            return self.bsdf._pdf(ctx, si, self.perturbed, self.values, wo, active)
 
         def eval_pdf(self, ctx, si, wo, active=True):
-            return self.bsdf._eval_pdf(ctx, si, self.perturbed, self.area, wo, active)
+            return self.bsdf._eval_pdf(ctx, si, self.perturbed, self.area, self.values, wo, active)
 
     return SeaSurfaceBSDF, SeaRoughness, SeaFoam, LaceFoam
 
@@ -795,9 +850,20 @@ def sea_roughness(shading: SeaShading, fallback: dict):
     return roughness_class(mi.Properties()).attach(shading, mi.load_dict(fallback))
 
 
+def _textures_in(tree) -> list:
+    """The field-shading textures (:class:`SeaRoughness`, :class:`SeaFoam`, :class:`LaceFoam`) in a BSDF dict."""
+    found = []
+    for value in tree.values():
+        if isinstance(value, dict):
+            found += _textures_in(value)
+        elif hasattr(value, "compute") and hasattr(value, "current"):
+            found.append(value)
+    return found
+
+
 def sea_surface(nested: dict, shading: SeaShading):
     """The water surface's BSDF ``nested`` (a dict, objects allowed inside) shaded from the sea's fields."""
     import mitsuba as mi  # noqa: PLC0415
 
     surface_class = _classes()[0]
-    return surface_class(mi.Properties()).attach(mi.load_dict(nested), shading)
+    return surface_class(mi.Properties()).attach(mi.load_dict(nested), shading, _textures_in(nested))

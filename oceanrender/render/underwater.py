@@ -145,6 +145,39 @@ def sun_lobe_functions():
 
 
 
+class _SharedHit:
+    """The BSDF of a path's hits (``bsdf``, a ``BSDFPtr``) where the lanes ``on`` hit a surface whose
+    shading frame is evaluated once per hit (``prepared``: :meth:`SeaSurfaceBSDF.prepared
+    <oceanrender.render.sea_shading.SeaSurfaceBSDF.prepared>`): its methods route those lanes to
+    ``prepared`` and the others to ``bsdf``."""
+
+    def __init__(self, bsdf, prepared, on):
+        self.bsdf, self.prepared, self.on = bsdf, prepared, on
+
+    def flags(self):
+        return self.bsdf.flags()
+
+    def eval_pdf(self, ctx, si, wo, active=True):
+        import drjit as dr  # noqa: PLC0415
+
+        value, pdf = self.prepared.eval_pdf(ctx, si, wo, active & self.on)
+        value_b, pdf_b = self.bsdf.eval_pdf(ctx, si, wo, active & ~self.on)
+        return dr.select(self.on, value, value_b), dr.select(self.on, pdf, pdf_b)
+
+    def sample(self, ctx, si, sample1, sample2, active=True):
+        import drjit as dr  # noqa: PLC0415
+
+        bs, weight = self.prepared.sample(ctx, si, sample1, sample2, active & self.on)
+        bs_b, weight_b = self.bsdf.sample(ctx, si, sample1, sample2, active & ~self.on)
+        return dr.select(self.on, bs, bs_b), dr.select(self.on, weight, weight_b)
+
+    def pdf(self, ctx, si, wo, active=True):
+        import drjit as dr  # noqa: PLC0415
+
+        return dr.select(self.on, self.prepared.pdf(ctx, si, wo, active & self.on),
+                         self.bsdf.pdf(ctx, si, wo, active & ~self.on))
+
+
 def _power_heuristic3(a, b, c):
     """a² / (a² + b² + c²), zero where all three vanish (Veach & Guibas 1995)."""
     import drjit as dr  # noqa: PLC0415
@@ -194,7 +227,7 @@ def hero_free_flight_update(weight, pdf_ratio, value, pdf):
 
 
 def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, eta: float = 1.333,
-               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None):
+               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None, water_surface=None):
     """Radiance along ``ray`` [W m⁻² sr⁻¹ nm⁻¹], in air or in the water, to the end of its path.
 
     A path tracer for a scene of vacuum and homogeneous media inside dielectric
@@ -234,6 +267,12 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
                                           delta lobe, for the MIS weight of an emitter the first
                                           segment meets in air (against emitter sampling there).
                                           None: the ray comes from a delta lobe (weight 1).
+    water_surface : mitsuba.BSDF, optional   The air–water surface's one BSDF, if it has ``prepared(si,
+                                          active, parallax)`` (the sea shaded from its fields,
+                                          :class:`~oceanrender.render.sea_shading.SeaSurfaceBSDF`):
+                                          its shading frame is then evaluated once per hit and
+                                          shared by the hit's emitter sampling, BSDF sampling and
+                                          density, instead of once per call.
 
     Returns
     -------
@@ -305,6 +344,10 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         si = scene.ray_intersect(ray, active)
         bsdf = si.bsdf(ray)
         water_bsdf = is_water_surface(bsdf)
+        bsdf_ptr = bsdf
+        if water_surface is not None:  # the sea's hits through its shading frame, evaluated once here
+            prepared = water_surface.prepared(si, active & water_bsdf, parallax=False, branch=True)
+            bsdf = _SharedHit(bsdf, prepared, water_bsdf)
         smooth = mi.has_flag(bsdf.flags(), mi.BSDFFlags.Smooth)
 
         # ---- In air: the emitter the segment meets (the sky where it misses), weighted by the
@@ -338,9 +381,7 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # flight: the connection does not sample the distance).
         on_surface = in_water & si.is_valid() & water_bsdf
         connect = on_surface & prev_in_water & smooth
-        light, p_e, p_s, valid = through_surface(si, bsdf, sampler, connect)
-        w_d = _power_heuristic3(p_e, prev_r * p_e, p_s)
-        L += dr.select(valid, W * dr.exp(-sigma_t * si.t) * light * w_d, 0.0)
+        W_d = W  # (its emitter sample is drawn with A's, below)
 
         tr, free_pdf = medium.transmittance_eval_pdf(mei, si, in_water)
         W_f, S_f = hero_free_flight_update(W, S, tr, free_pdf)
@@ -367,8 +408,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         surface = active & ~scattered & si.is_valid() & (depth < max_depth)
         opaque_in_water = surface & in_water & ~water_bsdf
 
-        def bsdf_f_pdf(d, on):
-            return bsdf.eval_pdf(ctx, si, si.to_local(d), on)
+        def bsdf_f_pdf(d, on):  # (``on``: opaque surfaces only)
+            return bsdf_ptr.eval_pdf(ctx, si, si.to_local(d), on)
 
         if sun_sampling:
             L += sun_strategy(si, bsdf_f_pdf, W, sigma_t, sampler, opaque_in_water)
@@ -376,10 +417,13 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # Emitter sampling at surfaces with a non-delta lobe: in air (as volpath), and through
         # the underside of the water surface for paths that did not come from an in-water vertex
         # (from one, D did it). prev_r = 0 unless the previous vertex was in the water.
+        # (D's connection and this are disjoint — D needs an in-water vertex before, this not —
+        # and share one emitter sample: the same weight, D's with the flight's transmittance.)
         nee = surface & smooth & (in_air | (water_bsdf & ~prev_in_water))
-        light, p_e, p_s, valid = through_surface(si, bsdf, sampler, nee)
-        w_a = _power_heuristic3(p_e, prev_r * p_e, p_s)
-        L += dr.select(valid, W * light * w_a, 0.0)
+        light, p_e, p_s, valid = through_surface(si, bsdf, sampler, connect | nee)
+        w_ad = _power_heuristic3(p_e, prev_r * p_e, p_s)
+        light = dr.select(connect, W_d * dr.exp(-sigma_t * si.t) * light, W * light)
+        L += dr.select(valid, light * w_ad, 0.0)
 
         # BSDF sampling at surfaces.
         bs, bsdf_w = bsdf.sample(ctx, si, sampler.next_1d(surface), sampler.next_2d(surface), surface)

@@ -332,3 +332,78 @@ def test_field_shaded_frame_is_split_and_keeps_the_vertex_frame_s_mean(variant):
         means[mode] = np.mean([renderer.render_xyz(64, seed)[0][..., 1].mean() for seed in (0, 1)])
     assert means["fields"] == pytest.approx(means["vertex"], rel=0.04)
     del mi
+
+
+def test_a_hit_s_shading_is_evaluated_once_and_is_the_bsdf_s_own(variant, body_and_fields, rng):
+    # A hit prepared once (the frame and the α and foam textures evaluated once, in a symbolic
+    # branch, then shared by sample, eval, pdf: what the split integrator and trace_path do) is
+    # the BSDF evaluated call by call, and both are the wrapper whose nested BSDF evaluates its
+    # textures itself. Same float32 arithmetic: values (scale: their maximum) to ROUNDOFF32.
+    import drjit as dr
+    import mitsuba as mi
+
+    from oceanrender.render.renderer import field_shaded_surface
+    from oceanrender.render.sea_shading import _classes
+
+    from dataclasses import replace
+
+    scene, body, fields = body_and_fields
+    camera = (3.0, -2.0, 6.0)
+    # foam B = 0.3 everywhere (drawn as lace: about a third of the hits are foam)
+    fields = replace(fields, foam=replace(fields.foam, fresh=np.full_like(fields.foam.fresh, 0.3)))
+    shading = SeaShading(fields, camera, pixel_angle(60.0, 320))
+    geometry = body.frame(0.75)
+    bsdf = field_shaded_surface(geometry, 1.333, 0.1, 0.8, shading)
+    assert len(bsdf.textures) == 2  # α and foam
+    plain = _classes()[0](mi.Properties()).attach(bsdf.nested, shading)  # textures evaluated by the nested BSDF
+    # points over the foam grid's centre, so some hits are foam
+    points = rng.uniform(-12.0, 12.0, (512, 2)) + np.asarray(fields.foam.center)
+    si = interactions(points, camera)
+    si.wavelengths = mi.Spectrum(550.0)
+    foam = np.array(next(t for t in bsdf.textures if type(t).__name__ == "SeaFoam").compute(si))
+    assert 0.02 < np.mean(foam > 0) < 0.98  # both foam and water among the hits
+    ctx = mi.BSDFContext()
+    wo = mi.Vector3f(*(np.asarray(c, np.float32) for c in rng.normal(size=(3, len(points)))))
+    wo = dr.normalize(wo)
+    u1, u2 = mi.Float(rng.uniform(size=len(points))), mi.Point2f(*rng.uniform(size=(2, len(points))))
+    prepared = bsdf.prepared(si, True, parallax=False, branch=True)
+
+    def spectrum(value):
+        return np.array(value[0] if dr.size_v(value) > 1 else value)
+
+    results = []
+    for b in (prepared, bsdf, plain):
+        value, pdf = b.eval_pdf(ctx, si, wo)
+        bs, weight = b.sample(ctx, si, u1, u2)
+        results.append([spectrum(value), np.array(pdf), np.array(b.pdf(ctx, si, bs.wo)), spectrum(weight),
+                        np.array(bs.wo.x), np.array(b.eval(ctx, si, wo)[0] if dr.size_v(mi.Spectrum) > 1
+                                                        else b.eval(ctx, si, wo))])
+        assert all(t.current is None for t in bsdf.textures)  # nothing left set after a call
+    for other in results[1:]:
+        for got, expected in zip(results[0], other):
+            assert np.any(expected != 0)
+            np.testing.assert_allclose(got, expected, rtol=0, atol=ROUNDOFF32 * np.max(np.abs(expected)))
+
+
+def test_a_path_s_hits_on_the_sea_are_prepared_once_with_the_same_result(variant, monkeypatch):
+    # trace_path given the sea's BSDF (its hits prepared once per step, in a symbolic branch)
+    # renders what it renders calling the BSDF per method: the same random numbers and the same
+    # float32 arithmetic. 24×14 px at 8 spp; pixel values (scale: the frame's mean) to 100 ×
+    # ROUNDOFF32 (float32 sums of different order along paths of several vertices).
+    import oceanrender.render.underwater as underwater
+    from oceanrender.pipeline import Sequence
+
+    scene = scene_from_dict({"name": "t", "output": {"resolution": [24, 14], "spp": 8},
+                             "camera": {"target": [0.0, 30.0, 0.0]}})
+    sequence = Sequence(scene, variant)
+    sequence.renderer.update_water(sequence.geometry(0))
+    shared = sequence.renderer.render_xyz(8, 3)[0]
+    trace_path = underwater.trace_path
+
+    def per_call(*args, water_surface=None, **kwargs):
+        return trace_path(*args, **kwargs)
+
+    monkeypatch.setattr(underwater, "trace_path", per_call)
+    separate = sequence.renderer.render_xyz(8, 3)[0]
+    assert np.all(np.isfinite(shared))
+    np.testing.assert_allclose(shared, separate, rtol=0, atol=100 * ROUNDOFF32 * float(np.mean(separate)))
