@@ -207,6 +207,8 @@ def _define_class() -> type:
             # floats, which a traced kernel would bake in as literals: a sun that moves between
             # frames (set_sun) would then recompile the render kernel every frame.
             self.sun = None
+            #: the sun's beam on the open sea's floor (:class:`~.sun_beam.FloorCaustics`), set before the first render
+            self.floor_caustics = None
             clamp = float(props.get("in_water_clamp", 0.0))
             self.clamps = clamp > 0  # whether to clamp at all is part of the kernel's structure
             self.in_water_clamp = None
@@ -288,7 +290,8 @@ def _define_class() -> type:
             # the sea shaded from its fields (:mod:`.sea_shading`): one shading frame per hit
             surface = bsdfs[0] if len(bsdfs) == 1 and hasattr(bsdfs[0], "prepared") else None
             return trace_path(scene, sampler, mi.Ray3f(ray), medium, active, is_water_surface=is_water_surface,
-                              sun=self.sun, max_depth=depth, rr_depth=rr_depth, last=last, water_surface=surface, **sun)
+                              sun=self.sun, max_depth=depth, rr_depth=rr_depth, last=last, water_surface=surface,
+                              floor=self.floor_caustics, **sun)
 
         def _from_camera_in_water(self, scene, sampler, ray, medium, active):
             """A camera inside the water body (its sensor's ``medium``): the whole path by ``trace_path``.

@@ -359,6 +359,14 @@ class WaterRenderer:
     object_ids: tuple[str, ...] = ()
     #: The sea's shading fields on the device (:class:`~.sea_shading.SeaShading`), or None (vertex shading).
     shading: object | None = None
+    #: The sun's beam on the open sea's floor (:class:`~.sun_beam.FloorCaustics`, ``[render] caustic_cell``), or None.
+    floor_caustics: object | None = None
+    #: The scene's ``[sun]`` (its spectrum, measured per direction, for :attr:`floor_caustics`).
+    sun_settings: object | None = None
+    #: The sun's (elevation, azimuth) [deg] last set by :meth:`point_sun`, or None (the scene's).
+    sun_angles: tuple[float, float] | None = None
+    #: (shading fields, (camera, sun)) the floor's map was last traced for (:meth:`update_caustics`).
+    caustics_for: tuple | None = None
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -423,11 +431,25 @@ class WaterRenderer:
             **seafloor_shapes(settings, geometry),
             **object_shapes(settings, objects),
         })
-        return cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
-                   bands=settings.output.spectral_bands, in_water=in_water,
-                   in_water_fraction=render.in_water_fraction if two_pass else 1.0,
-                   camera_position=np.asarray(settings.camera.position, float), n_water=water_ior(settings),
-                   object_ids=tuple(object_id(o.name) for o in objects), shading=shading)
+        renderer = cls(scene=scene, params=mi.traverse(scene), resolution=(width, height),
+                       bands=settings.output.spectral_bands, in_water=in_water,
+                       in_water_fraction=render.in_water_fraction if two_pass else 1.0,
+                       camera_position=np.asarray(settings.camera.position, float), n_water=water_ior(settings),
+                       object_ids=tuple(object_id(o.name) for o in objects), shading=shading,
+                       sun_settings=settings.sun)
+        floor = next((shape for shape in scene.shapes() if shape.id() == SEAFLOOR_ID), None)
+        import drjit as dr  # noqa: PLC0415
+
+        if render.caustic_cell > 0 and shading is not None and floor is not None and sun_sampling \
+                and render.integrator == "split" and dr.is_jit_v(mi.Float):  # trace_path: JIT variants
+            from .sun_beam import FloorCaustics  # noqa: PLC0415
+
+            renderer.floor_caustics = FloorCaustics(floor, -settings.water.depth + SEAFLOOR_LIFT_M,
+                                                    render.caustic_cell, render.caustic_window, water_ior(settings))
+            for integrator in renderer.integrators():
+                integrator.floor_caustics = renderer.floor_caustics
+            renderer.update_caustics(geometry)
+        return renderer
 
     def integrators(self) -> list:
         """The Mitsuba integrators a frame uses: the scene's, then the in-water pass's (two-pass frames)."""
@@ -480,6 +502,7 @@ class WaterRenderer:
         scene parameter, and the integrator holds its sun as an opaque value.
         """
         apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
+        self.sun_angles = (float(elevation), float(azimuth))
         for integrator in self.integrators():
             if getattr(integrator, "sun", None) is not None:
                 integrator.set_sun(sun_direction(float(elevation), float(azimuth)))
@@ -512,6 +535,29 @@ class WaterRenderer:
         update_water_parameters(self.params, geometry)
         if self.shading is not None and geometry.shading is not None:
             self.shading.update(geometry.shading)
+        self.update_caustics(geometry)
+
+    def update_caustics(self, geometry: FrameGeometry) -> None:
+        """Trace the sun's beam onto the floor's map for a frame (after the shading fields and the sun are set)."""
+        if self.floor_caustics is None or geometry.shading is None:
+            return
+        from dataclasses import replace  # noqa: PLC0415
+
+        from .environment import SUN_WAVELENGTHS_NM, _sun_irradiance  # noqa: PLC0415
+
+        # the meter's render and the frame's both load the same geometry: one map for both
+        key = (tuple(np.asarray(self.camera_position, float)), self.sun_angles)
+        last = self.caustics_for
+        if last is not None and last[0] is geometry.shading and last[1] == key:
+            return
+        self.caustics_for = (geometry.shading, key)
+        sun = self.sun_settings
+        angles = self.sun_angles
+        if angles is not None:
+            sun = sun.model_copy(update={"elevation": angles[0], "azimuth": angles[1]}) \
+                if hasattr(sun, "model_copy") else replace(sun, elevation=angles[0], azimuth=angles[1])
+        self.floor_caustics.update(self.shading, sun_direction(sun.elevation, sun.azimuth), _sun_irradiance(sun),
+                                   SUN_WAVELENGTHS_NM, self.camera_position[:2])
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
         """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count).
@@ -555,6 +601,7 @@ class WhiteMeter:
     def point_sun(self, elevation: float, azimuth: float) -> None:
         """Move the sun to ``elevation`` (> 0) and ``azimuth`` clockwise from north [deg], in place."""
         apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
+        self.sun_angles = (float(elevation), float(azimuth))
 
     def measure(self, seed: int = 0) -> np.ndarray:
         """XYZ [cd m⁻²] of the white plane under the current sun and sky."""

@@ -497,7 +497,7 @@ class SeaShading:
         return dr.select(self.on_top(si), weight, 0.0)
 
     def _area_at(self, si, active, parallax=False):
-        """(N of :meth:`_area_normal` at the hit's footprint, shading spacing Δ [m], on_top) of a hit."""
+        """(N of :meth:`area_normal` at the hit's footprint, shading spacing Δ [m], on_top) of a hit."""
         import mitsuba as mi  # noqa: PLC0415
 
         top = mi.Bool(active) & self.on_top(si)
@@ -509,7 +509,7 @@ class SeaShading:
         fields = self.fields_at(rest, spacing, top)
         if self.join:
             return self._joined_area(si, fields, top, tau), spacing, top
-        return self._area_normal(*fields), spacing, top
+        return self.area_normal(*fields), spacing, top
 
     def _joined_area(self, si, fields, top, tau):
         """The vector area per unit rest area [-] of a joined body's hit (:class:`JoinShading`).
@@ -518,7 +518,7 @@ class SeaShading:
         the fields' normal at the footprint, of the sea's own interpolated vertex normal), and
         the area element det(I + τ_s (J − I)) of the sea's horizontal displacement scaled as the
         body scales its short waves: (−s_x, −s_y, 1) times it (``tau``: τ_s at the hit). With τ_s = 1
-        and s_body = s_sea it is :meth:`_area_normal` of the fields exactly.
+        and s_body = s_sea it is :meth:`area_normal` of the fields exactly.
         """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
@@ -530,7 +530,7 @@ class SeaShading:
             z = dr.maximum(n.z, MIN_NORMAL_Z * dr.norm(n))
             return -n.x / z, -n.y / z
 
-        fx, fy = slope(self._area_normal(*fields))
+        fx, fy = slope(self.area_normal(*fields))
         bx, by = slope(si.sh_frame.n)
         vx, vy = slope(sea)
         sx, sy = bx + tau * (fx - vx), by + tau * (fy - vy)
@@ -546,7 +546,7 @@ class SeaShading:
         return dr.normalize(area), self.alpha_at(spacing), top
 
     @staticmethod
-    def _area_normal(sx, sy, xx, yy, xy):
+    def area_normal(sx, sy, xx, yy, xy):
         """∂p/∂x₀ × ∂p/∂y₀ of p = (x₀ + λD_x, y₀ + λD_y, η): the surface's vector area per unit rest area [-]."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
@@ -562,7 +562,7 @@ class SeaShading:
         A ray meets the mesh with a density per unit rest area ∝ ω_i·N_g (N_g = ∂p/∂u × ∂p/∂v of
         the triangle, the texture coordinates being rest positions), while the surface the fields
         describe shows each rest element with its own projected area max(0, ω_i·N) (N of
-        :meth:`_area_normal`; facets turned away are hidden). The weight
+        :meth:`area_normal`; facets turned away are hidden). The weight
         w = max(0, ω_i·N) / ω_i·N_g (signs taken on the side the ray comes from) turns the
         mesh's sampling into the fields' visible normals: its mean over a pixel is 1 where the two
         surfaces share their long waves (same vector area, Heitz 2014, Eq. 2), facets facing the ray

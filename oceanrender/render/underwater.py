@@ -227,7 +227,7 @@ def hero_free_flight_update(weight, pdf_ratio, value, pdf):
 
 
 def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, eta: float = 1.333,
-               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None, water_surface=None):
+               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None, water_surface=None, floor=None):
     """Radiance along ``ray`` [W m⁻² sr⁻¹ nm⁻¹], in air or in the water, to the end of its path.
 
     A path tracer for a scene of vacuum and homogeneous media inside dielectric
@@ -273,6 +273,10 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
                                           its shading frame is then evaluated once per hit and
                                           shared by the hit's emitter sampling, BSDF sampling and
                                           density, instead of once per call.
+    floor : FloorCaustics, optional       The sun's beam traced onto the open sea's floor
+                                          (:class:`~oceanrender.render.sun_beam.FloorCaustics`): at
+                                          a floor vertex inside its map the sun comes from the map,
+                                          and no strategy reaches the sun's cone from there.
 
     Returns
     -------
@@ -303,16 +307,17 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
     def through_surface(si, bsdf, sampler, on):
         """Emitter sampling at a surface point, through its BSDF.
 
-        Returns (f·L_e/p_e [W m⁻² sr⁻¹ nm⁻¹ per unit throughput], p_e, p_s, valid): the
+        Returns (f·L_e/p_e [W m⁻² sr⁻¹ nm⁻¹ per unit throughput], p_e, p_s, valid, direction): the
         emitter-sampling and BSDF-sampling densities of the sampled direction (p_s = 0 for
-        a delta emitter), for the MIS weights.
+        a delta emitter), for the MIS weights, and that direction.
         """
         ds, em = scene.sample_emitter_direction(si, sampler.next_2d(on), True, on)
         f_y, p_s = bsdf.eval_pdf(ctx, si, si.to_local(ds.d), on)
-        return f_y * em, ds.pdf, dr.select(ds.delta, 0.0, p_s), on & (ds.pdf > 0)
+        return f_y * em, ds.pdf, dr.select(ds.delta, 0.0, p_s), on & (ds.pdf > 0), ds.d
 
-    def sun_strategy(vertex, f_and_pdf, weight, sigma_t, sampler, on):
-        """Strategy B at an in-water vertex: d ~ q, trace to the surface, emitter sampling there."""
+    def sun_strategy(vertex, f_and_pdf, weight, sigma_t, sampler, on, no_sun=False):
+        """Strategy B at an in-water vertex: d ~ q, trace to the surface, emitter sampling there (``no_sun``:
+        lanes whose sun comes from the floor's map: none in the sun's cone)."""
         d, q = sample_lobe(sampler.next_2d(on), sun_v, eta, alpha)
         on &= q > 0
         f_x, p_x = f_and_pdf(d, on)
@@ -323,7 +328,9 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # NOTE: the connection's length is evaluated, not sampled: it adds nothing to the
         # path's wavelength densities, so the weight W of the vertex applies as it is.
         transmittance = dr.exp(-sigma_t * si_b.t)
-        light, p_e, p_s, valid = through_surface(si_b, bsdf_b, sampler, on)
+        light, p_e, p_s, valid, d_air = through_surface(si_b, bsdf_b, sampler, on)
+        if floor is not None:
+            valid &= ~(no_sun & floor.in_cone(d_air))
         w = _power_heuristic3(q * p_e, p_x * p_e, p_x * p_s)
         contribution = weight * f_x * transmittance * light * (w / dr.select(q > 0, q, 1.0))
         return dr.select(valid, contribution, 0.0)
@@ -332,7 +339,7 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         return active
 
     def body(sampler, ray, W, S, L, depth, active, medium, prev_r, prev_in_water, last_it, last_pdf, last_delta,
-             last_r):
+             last_r, prev_floor, from_floor):
         # ---- Russian roulette on the throughput after rr_depth vertices (as volpath).
         q_rr = dr.minimum(dr.max(W), 0.99)
         roulette = active & (depth >= rr_depth)
@@ -358,6 +365,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         ds = mi.DirectionSample3f(scene, si, last_it)
         p_e = scene.pdf_emitter_direction(last_it, ds, hit_emitter & ~last_delta)
         w_c = dr.select(last_delta, 1.0, _power_heuristic3(last_pdf, p_e, last_r * p_e))
+        if floor is not None:  # the floor's direct sun (strategy C of a floor vertex) is the map's
+            hit_emitter &= ~(from_floor & floor.in_cone(ray.d))
         L += dr.select(hit_emitter, W * emitter.eval(si, hit_emitter) * w_c, 0.0)
 
         # ---- In the water: free flight on the hero channel.
@@ -407,12 +416,21 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # ---- Surfaces: the water surface (from either side), opaque surfaces in the water or in air.
         surface = active & ~scattered & si.is_valid() & (depth < max_depth)
         opaque_in_water = surface & in_water & ~water_bsdf
+        at_floor = mi.Bool(False)
+        if floor is not None:
+            # The sun's beam on the floor from the map (E₀ per W m⁻² of the sun, its mean path s̄):
+            # f_r E₀ E_n(λ) exp(−σ_t s̄), f_r the floor's BRDF (Lambertian: its value towards the zenith).
+            e0, path, inside = floor.at(si.p, opaque_in_water)
+            at_floor = opaque_in_water & floor.on_floor(si) & inside
+            f_r = bsdf_ptr.eval(ctx, si, mi.Vector3f(0.0, 0.0, 1.0), at_floor)
+            beam = e0 * floor.sun_irradiance(si.wavelengths, at_floor) * dr.exp(-sigma_t * path)
+            L += dr.select(at_floor, W * f_r * beam, 0.0)
 
         def bsdf_f_pdf(d, on):  # (``on``: opaque surfaces only)
             return bsdf_ptr.eval_pdf(ctx, si, si.to_local(d), on)
 
         if sun_sampling:
-            L += sun_strategy(si, bsdf_f_pdf, W, sigma_t, sampler, opaque_in_water)
+            L += sun_strategy(si, bsdf_f_pdf, W, sigma_t, sampler, opaque_in_water, at_floor)
 
         # Emitter sampling at surfaces with a non-delta lobe: in air (as volpath), and through
         # the underside of the water surface for paths that did not come from an in-water vertex
@@ -420,7 +438,9 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # (D's connection and this are disjoint — D needs an in-water vertex before, this not —
         # and share one emitter sample: the same weight, D's with the flight's transmittance.)
         nee = surface & smooth & (in_air | (water_bsdf & ~prev_in_water))
-        light, p_e, p_s, valid = through_surface(si, bsdf, sampler, connect | nee)
+        light, p_e, p_s, valid, d_air = through_surface(si, bsdf, sampler, connect | nee)
+        if floor is not None:  # D from a floor vertex: its sun is the map's
+            valid &= ~(connect & prev_floor & floor.in_cone(d_air))
         w_ad = _power_heuristic3(p_e, prev_r * p_e, p_s)
         light = dr.select(connect, W_d * dr.exp(-sigma_t * si.t) * light, W * light)
         L += dr.select(valid, light * w_ad, 0.0)
@@ -449,13 +469,17 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         W = dr.select(scatter, W_s * phase_w, dr.select(sample_surface, W * bsdf_w, W))
         prev_r = dr.select(scatter, r_phase,
                            dr.select(sample_surface, dr.select(opaque_in_water & ~delta, r_surface, 0.0), prev_r))
+        # a path that leaves the water through the surface straight from a floor vertex (C: its sun is the map's)
+        from_floor = sample_surface & water_bsdf & prev_floor & transmits
+        prev_floor = sample_surface & at_floor
         prev_in_water = scatter | (sample_surface & opaque_in_water)
         active = (scatter & (phase_pdf > 0)) | sample_surface
         active &= dr.any(W != 0.0)
         return (sampler, ray, W, S, L, depth, active, medium, prev_r, prev_in_water, last_it, last_pdf, last_delta,
-                last_r)
+                last_r, prev_floor, from_floor)
 
     state = (sampler, mi.Ray3f(ray), mi.Spectrum(1.0), mi.Spectrum(1.0), mi.Spectrum(0.0), mi.UInt32(0), active,
-             mi.MediumPtr(medium), mi.Float(0.0), mi.Bool(False), last_it, last_pdf, last_delta, mi.Float(0.0))
+             mi.MediumPtr(medium), mi.Float(0.0), mi.Bool(False), last_it, last_pdf, last_delta, mi.Float(0.0),
+             mi.Bool(False), mi.Bool(False))
     state = dr.while_loop(state, cond, body, label="oceanrender_hero_path")
     return dr.select(active, state[4], 0.0)

@@ -130,6 +130,15 @@ class RenderSettings(_Section):
         description="('split') samples per pixel of the transmitted (in-water) lobe, as a fraction of spp: "
                     "below 1 a frame is two passes, the rest at spp and the in-water lobe at "
                     "max(1, round(fraction x spp)); the sum is unbiased")
+    caustic_cell: float = Field(
+        0.02, ge=0, le=1.0,
+        description="('split', open sea with [water] bottom_albedo, fields shading) side of the cells of the map "
+                    "of the sun's beam traced through the sea onto the floor [m]: the caustics' resolution "
+                    "(docs/sunlight.md); 0: off, the floor's sunlight from the path tracer's connections")
+    caustic_window: float = Field(
+        24.0, gt=0, le=400,
+        description="side of the floor's caustic map, centred under the camera [m]; beyond it the path tracer's "
+                    "connections")
     denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
     surface_shading: Literal["fields", "vertex"] = Field(
         "fields", description="'fields': every water hit shaded from the sea's fields at its footprint (FFT sea, "

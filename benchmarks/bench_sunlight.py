@@ -1,0 +1,68 @@
+"""Issue 41: the cost of tracing the sun's beam onto the floor's map per frame, side by side with the path tracer alone.
+
+Run: ``.venv/bin/python benchmarks/bench_sunlight.py [--size 64x36 --spp 4 --frames 2]``.
+
+``scenes/under_water_floor.toml`` in one process, for ``[render] caustic_cell`` 0.02 m (the map)
+and 0 (the path tracer's connections alone): a sequence is built, frame 0 computed once (JIT,
+the sun's spectrum), then frames 1..N timed. The map is built lazily, in the render kernel's
+first pass, so its cost shows in the render column. Prints a Markdown table for BENCHMARKS.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import time
+import tomllib
+import warnings
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--size", default="64x36")
+    parser.add_argument("--spp", type=int, default=4)
+    parser.add_argument("--frames", type=int, default=2)
+    args = parser.parse_args()
+    warnings.filterwarnings("ignore", message=".*Matplotlib.*")
+
+    from oceanrender.pipeline import Sequence
+    from oceanrender.runtime.variants import activate_variant
+    from oceanrender.scene.settings import scene_from_dict
+
+    path = ROOT / "scenes" / "under_water_floor.toml"
+    width, height = (int(v) for v in args.size.split("x"))
+    rows = {}
+    for cell in (0.02, 0.0):
+        data = tomllib.loads(path.read_text())
+        data["render"]["caustic_cell"] = cell
+        data["output"].update(resolution=[width, height], spp=args.spp)
+        scene = scene_from_dict(data, str(path))
+        runtime = activate_variant(scene.render.variant)
+        sequence = Sequence(scene, runtime.variant)
+        tic = time.perf_counter()
+        sequence.compute_frame(0)
+        first = time.perf_counter() - tic
+        totals = {}
+        tic = time.perf_counter()
+        for frame in range(1, args.frames + 1):
+            for stage, seconds in sequence.compute_frame(frame).seconds.items():
+                totals[stage] = totals.get(stage, 0.0) + seconds
+        wall = (time.perf_counter() - tic) / args.frames
+        rows[cell] = (first, {k: v / args.frames for k, v in totals.items()}, wall)
+    print(f"# under_water_floor: {width}x{height}, {args.spp} spp, variant {runtime.variant}, "
+          f"{platform.processor() or platform.machine()}; {args.frames} frames timed per mode after one warm-up")
+    print()
+    print("| caustic_cell [m] | first frame [s] | geometry [s/frame] | update [s/frame] | render [s/frame] | frame, wall [s] |")
+    print("|---:|---:|---:|---:|---:|---:|")
+    for cell, (first, per, wall) in rows.items():
+        print(f"| {cell:g} | {first:.1f} | {per.get('geometry', 0):.2f} | {per.get('update', 0):.2f} "
+              f"| {per.get('render', 0):.2f} | {wall:.2f} |")
+    print()
+    print(f"the map's cost per frame: {rows[0.02][2] - rows[0.0][2]:.2f} s")
+
+
+if __name__ == "__main__":
+    main()
