@@ -209,6 +209,8 @@ def _define_class() -> type:
             self.sun = None
             #: the sun's beam on the open sea's floor (:class:`~.sun_beam.FloorCaustics`), set before the first render
             self.floor_caustics = None
+            #: the sun's beam in the water's volume (:class:`~.sun_beam.VolumeBeam`), set before the first render
+            self.volume_beam = None
             clamp = float(props.get("in_water_clamp", 0.0))
             self.clamps = clamp > 0  # whether to clamp at all is part of the kernel's structure
             self.in_water_clamp = None
@@ -291,7 +293,7 @@ def _define_class() -> type:
             surface = bsdfs[0] if len(bsdfs) == 1 and hasattr(bsdfs[0], "prepared") else None
             return trace_path(scene, sampler, mi.Ray3f(ray), medium, active, is_water_surface=is_water_surface,
                               sun=self.sun, max_depth=depth, rr_depth=rr_depth, last=last, water_surface=surface,
-                              floor=self.floor_caustics, **sun)
+                              floor=self.floor_caustics, volume=self.volume_beam, **sun)
 
         def _from_camera_in_water(self, scene, sampler, ray, medium, active):
             """A camera inside the water body (its sensor's ``medium``): the whole path by ``trace_path``.

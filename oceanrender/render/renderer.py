@@ -361,6 +361,8 @@ class WaterRenderer:
     shading: object | None = None
     #: The sun's beam on the open sea's floor (:class:`~.sun_beam.FloorCaustics`, ``[render] caustic_cell``), or None.
     floor_caustics: object | None = None
+    #: The sun's beam in the water's volume (:class:`~.sun_beam.VolumeBeam`, ``[render] shaft_cell``), or None.
+    volume_beam: object | None = None
     #: The scene's ``[sun]`` (its spectrum, measured per direction, for :attr:`floor_caustics`).
     sun_settings: object | None = None
     #: The sun's (elevation, azimuth) [deg] last set by :meth:`point_sun`, or None (the scene's).
@@ -448,7 +450,16 @@ class WaterRenderer:
                                                     render.caustic_cell, render.caustic_window, water_ior(settings))
             for integrator in renderer.integrators():
                 integrator.floor_caustics = renderer.floor_caustics
-            renderer.update_caustics(geometry)
+        if render.shaft_cell > 0 and shading is not None and sun_sampling and render.integrator == "split" \
+                and dr.is_jit_v(mi.Float):
+            from .sun_beam import SHAFT_PLANE_STEP, VolumeBeam  # noqa: PLC0415
+
+            depth = min(render.shaft_depth, settings.water.depth)
+            renderer.volume_beam = VolumeBeam(render.shaft_cell, SHAFT_PLANE_STEP, render.caustic_window, depth,
+                                              water_ior(settings))
+            for integrator in renderer.integrators():
+                integrator.volume_beam = renderer.volume_beam
+        renderer.update_caustics(geometry)
         return renderer
 
     def integrators(self) -> list:
@@ -539,7 +550,8 @@ class WaterRenderer:
 
     def update_caustics(self, geometry: FrameGeometry) -> None:
         """Trace the sun's beam onto the floor's map for a frame (after the shading fields and the sun are set)."""
-        if self.floor_caustics is None or geometry.shading is None:
+        maps = [m for m in (self.floor_caustics, self.volume_beam) if m is not None]
+        if not maps or geometry.shading is None:
             return
         from dataclasses import replace  # noqa: PLC0415
 
@@ -556,8 +568,9 @@ class WaterRenderer:
         if angles is not None:
             sun = sun.model_copy(update={"elevation": angles[0], "azimuth": angles[1]}) \
                 if hasattr(sun, "model_copy") else replace(sun, elevation=angles[0], azimuth=angles[1])
-        self.floor_caustics.update(self.shading, sun_direction(sun.elevation, sun.azimuth), _sun_irradiance(sun),
-                                   SUN_WAVELENGTHS_NM, self.camera_position[:2])
+        for beam_map in maps:
+            beam_map.update(self.shading, sun_direction(sun.elevation, sun.azimuth), _sun_irradiance(sun),
+                            SUN_WAVELENGTHS_NM, self.camera_position[:2])
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
         """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count).

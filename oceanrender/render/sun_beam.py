@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-__all__ = ["sun_rays", "splat_plane", "device_plane_irradiance", "FloorCaustics", "SUN_CONE"]
+__all__ = ["sun_rays", "splat_plane", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
 
 
 def sun_rays(shading, sun, n_water: float, window: tuple[float, float, float], ray: float):
@@ -63,10 +63,11 @@ def sun_rays(shading, sun, n_water: float, window: tuple[float, float, float], r
 
 
 def splat_plane(points, direction, power, lit, z: float, origin: tuple[float, float], cell: float,
-                shape: tuple[int, int], weights=(None,)):
+                shape: tuple[int, int], weights=(None,), targets=None, offset: int = 0):
     """Per cell of the plane at height ``z`` [m], the power of the rays landing on it (bilinear shares),
     for each entry of ``weights`` (None: the power itself; a callable of the path length s [m]: the
-    power times it) — device buffers (ny·nx,), rows along y; power landing outside is dropped."""
+    power times it) — device buffers (ny·nx,), rows along y; power landing outside is dropped.
+    ``targets``: buffers to add into instead, from entry ``offset`` on."""
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 
@@ -77,13 +78,14 @@ def splat_plane(points, direction, power, lit, z: float, origin: tuple[float, fl
     v = (points.y + path * direction.y - float(origin[1])) / cell - 0.5
     ju, iv = dr.floor(u), dr.floor(v)
     fu, fv = u - ju, v - iv
-    targets = [dr.zeros(mi.Float, nx * ny) for _ in weights]
+    if targets is None:
+        targets = [dr.zeros(mi.Float, nx * ny) for _ in weights]
     values = [power if w is None else power * w(path) for w in weights]
     for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
                           (1, 1, fu * fv)):
         jj, ii = mi.Int32(ju) + dj, mi.Int32(iv) + di
         inside = on & (jj >= 0) & (jj < nx) & (ii >= 0) & (ii < ny)
-        flat = mi.UInt32(dr.select(inside, ii * nx + jj, 0))
+        flat = mi.UInt32(dr.select(inside, ii * nx + jj, 0)) + int(offset)
         for target, value in zip(targets, values):
             dr.scatter_reduce(dr.ReduceOp.Add, target, value * share, flat, inside)
     return targets
@@ -134,7 +136,47 @@ SUN_CONE = 1.05 * SUN_RADIUS
 RAYS_PER_CELL = 4
 
 
-class FloorCaustics:
+class _BeamMap:
+    """What the maps of the sun's beam share in the render kernel: the sun's cone and its spectrum."""
+
+    sun = None
+    spectrum = None
+    cos_cone = float(math.cos(SUN_CONE))
+    wavelength_0, wavelength_step = 360.0, 5.0
+
+    def set_sun(self, sun, sun_spectrum, wavelengths) -> None:
+        """The frame's sun: unit vector towards it, its normal irradiance [W m⁻² nm⁻¹] at ``wavelengths`` [nm]."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.sun = mi.Vector3f(*(float(c) for c in sun))
+        self.wavelength_0 = float(wavelengths[0])
+        self.wavelength_step = float(wavelengths[1] - wavelengths[0])
+        self.spectrum = mi.Float(np.asarray(sun_spectrum, np.float32))
+        dr.make_opaque(self.sun, self.spectrum)
+
+    def in_cone(self, direction):
+        """Directions (unit, in the air) inside the sun's cone :data:`SUN_CONE`."""
+        import drjit as dr  # noqa: PLC0415
+
+        return dr.dot(direction, self.sun) >= self.cos_cone
+
+    def sun_irradiance(self, wavelengths, active):
+        """The sun's normal irradiance E_n [W m⁻² nm⁻¹] at ``wavelengths`` [nm] (a Spectrum), linear in λ."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        size = dr.width(self.spectrum)
+        channels = []
+        for c in range(dr.size_v(mi.Spectrum)):
+            u = dr.clip((wavelengths[c] - self.wavelength_0) / self.wavelength_step, 0.0, size - 1.000001)
+            i = mi.UInt32(dr.floor(u))
+            channels.append(dr.lerp(dr.gather(mi.Float, self.spectrum, i, active),
+                                    dr.gather(mi.Float, self.spectrum, i + 1, active), u - dr.floor(u)))
+        return mi.Spectrum(channels)
+
+
+class FloorCaustics(_BeamMap):
     """The sun's beam on the open sea's flat floor, traced per frame, for the in-water path tracer.
 
     A square map of ``side`` [m] in cells of ``cell`` [m] on the floor's plane z = ``floor_z``
@@ -156,10 +198,8 @@ class FloorCaustics:
         self.irradiance = dr.zeros(mi.Float, self.count * self.count)
         self.path_irradiance = dr.zeros(mi.Float, self.count * self.count)
         self.origin = mi.Point2f(0.0, 0.0)
-        self.sun = mi.Vector3f(0.0, 0.0, 1.0)
-        self.spectrum = dr.zeros(mi.Float, 2)
-        self.cos_cone = float(math.cos(SUN_CONE))
-        dr.make_opaque(self.irradiance, self.path_irradiance, self.origin, self.sun, self.spectrum)
+        dr.make_opaque(self.irradiance, self.path_irradiance, self.origin)
+        self.set_sun((0.0, 0.0, 1.0), np.zeros(2), (360.0, 365.0))
 
     def update(self, shading, sun, sun_spectrum, wavelengths, centre) -> None:
         """Trace the frame's beam: ``sun`` (unit, towards it), its normal irradiance ``sun_spectrum`` [W m⁻² nm⁻¹]
@@ -183,11 +223,8 @@ class FloorCaustics:
         area = self.cell * self.cell
         self.irradiance, self.path_irradiance = power / area, path_power / area
         self.origin = mi.Point2f(x0, y0)
-        self.sun = mi.Vector3f(*(float(c) for c in sun))
-        self.wavelength_0 = float(wavelengths[0])
-        self.wavelength_step = float(wavelengths[1] - wavelengths[0])
-        self.spectrum = mi.Float(np.asarray(sun_spectrum, np.float32))
-        dr.make_opaque(self.irradiance, self.path_irradiance, self.origin, self.sun, self.spectrum)
+        dr.make_opaque(self.irradiance, self.path_irradiance, self.origin)
+        self.set_sun(sun, sun_spectrum, wavelengths)
 
     # ---- traced into the render kernel
 
@@ -196,12 +233,6 @@ class FloorCaustics:
         import mitsuba as mi  # noqa: PLC0415
 
         return si.shape == mi.ShapePtr(self.floor)
-
-    def in_cone(self, direction):
-        """Directions (unit, in the air) inside the sun's cone :data:`SUN_CONE`."""
-        import drjit as dr  # noqa: PLC0415
-
-        return dr.dot(direction, self.sun) >= self.cos_cone
 
     def at(self, p, active):
         """(E₀ [W m⁻² per W m⁻²], s̄ [m], inside the map) at floor points ``p``, bilinear between cell centres."""
@@ -225,18 +256,114 @@ class FloorCaustics:
         path = dr.select(e > 0.0, es / dr.maximum(e, 1e-30), 0.0)
         return e, path, inside
 
-    def sun_irradiance(self, wavelengths, active):
-        """The sun's normal irradiance E_n [W m⁻² nm⁻¹] at ``wavelengths`` [nm] (a Spectrum), linear in λ."""
+
+#: Spacing of the volume's planes [m].
+SHAFT_PLANE_STEP = 0.5
+
+#: Rays per cell side of the volume's planes [-] (the shafts are seen integrated along the view: fewer than the floor).
+VOLUME_RAYS_PER_CELL = 2
+
+
+class VolumeBeam(_BeamMap):
+    """The sun's beam in the water's volume — the shafts — traced per frame onto horizontal planes.
+
+    Planes every ``dz`` [m] from ``dz`` below the mean level down ``depth`` [m], each a square of
+    ``side`` [m] in cells of ``cell`` [m] centred under the camera. Per cell, from the rays that
+    land in it: the beam's scalar irradiance Σ P/|d_z| over the cell's area (per W m⁻² of the sun,
+    unattenuated: the flux through a horizontal cell over the cosine of each ray's direction), the
+    same weighted by the path length s from the surface and by the rays' horizontal directions
+    (their power-weighted mean direction). At a scattering vertex inside the planes the tracer adds
+    σ_s p(θ) E₀ E_n(λ) exp(−σ_t s̄), θ between the beam's mean direction and the view, trilinear
+    between cells and planes, and leaves out every strategy that reaches the sun's cone from there.
+    """
+
+    CHANNELS = 4  # Σ P/|d_z|, Σ P s/|d_z|, Σ P d_x/|d_z|, Σ P d_y/|d_z|
+
+    def __init__(self, cell: float, dz: float, side: float, depth: float, n_water: float):
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        size = dr.width(self.spectrum)
-        channels = []
-        for c in range(dr.size_v(mi.Spectrum)):
-            u = dr.clip((wavelengths[c] - self.wavelength_0) / self.wavelength_step, 0.0, size - 1.000001)
-            i = mi.UInt32(dr.floor(u))
-            channels.append(dr.lerp(dr.gather(mi.Float, self.spectrum, i, active),
-                                    dr.gather(mi.Float, self.spectrum, i + 1, active), u - dr.floor(u)))
-        return mi.Spectrum(channels)
+        self.cell, self.dz, self.n_water = float(cell), float(dz), float(n_water)
+        self.count = int(round(float(side) / self.cell))
+        self.side = self.count * self.cell
+        self.planes = max(2, int(round(float(depth) / self.dz)))
+        size = self.planes * self.count * self.count
+        self.values = [dr.zeros(mi.Float, size) for _ in range(self.CHANNELS)]
+        self.origin = mi.Point2f(0.0, 0.0)
+        dr.make_opaque(*self.values, self.origin)
+        self.set_sun((0.0, 0.0, 1.0), np.zeros(2), (360.0, 365.0))
 
+    def height(self, k: int) -> float:
+        """Height of plane k [m]: −(k + 1) dz."""
+        return -(k + 1) * self.dz
 
+    def update(self, shading, sun, sun_spectrum, wavelengths, centre) -> None:
+        """Trace the frame's beam into the planes (as :meth:`FloorCaustics.update`)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        sun = np.asarray(sun, float) / np.linalg.norm(sun)
+        depth = self.planes * self.dz
+        sin_t = math.hypot(sun[0], sun[1]) / self.n_water
+        horizontal = -np.asarray(sun[:2]) / max(math.hypot(sun[0], sun[1]), 1e-12) * sin_t
+        slope = 1.0 / math.sqrt(1.0 - sin_t * sin_t)
+        x0 = float(centre[0]) - self.side / 2
+        y0 = float(centre[1]) - self.side / 2
+        # every plane's rays leave the surface up-sun of it: the rays' window covers them all
+        lo = np.minimum(0.0, horizontal * depth * slope)
+        hi = np.maximum(0.0, horizontal * depth * slope)
+        margin = 0.35 * depth + 1.0
+        side = self.side + float(np.max(hi - lo)) + 2 * margin
+        window = (x0 - hi[0] - margin, y0 - hi[1] - margin, side)
+        points, direction, power, lit = sun_rays(shading, sun, self.n_water, window,
+                                                 self.cell / VOLUME_RAYS_PER_CELL)
+        inverse = 1.0 / dr.maximum(-direction.z, 1e-6)
+        weights = (lambda s: inverse, lambda s: s * inverse, lambda s: direction.x * inverse,
+                   lambda s: direction.y * inverse)
+        n2 = self.count * self.count
+        values = [dr.zeros(mi.Float, self.planes * n2) for _ in range(self.CHANNELS)]
+        for k in range(self.planes):
+            splat_plane(points, direction, power, lit, self.height(k), (x0, y0), self.cell,
+                        (self.count, self.count), weights, targets=values, offset=k * n2)
+        area = self.cell * self.cell
+        self.values = [v / area for v in values]
+        self.origin = mi.Point2f(x0, y0)
+        dr.make_opaque(*self.values, self.origin)
+        self.set_sun(sun, sun_spectrum, wavelengths)
+
+    # ---- traced into the render kernel
+
+    def at(self, p, active):
+        """(E₀ [W m⁻² per W m⁻²], s̄ [m], the beam's unit mean direction, inside) at points ``p`` in the water,
+        trilinear between the cells' centres and the planes (above the first plane: the first plane's E₀ and
+        direction, its path shortened by the height over it)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        n, planes = self.count, self.planes
+        u = (p.x - self.origin.x) / self.cell - 0.5
+        v = (p.y - self.origin.y) / self.cell - 0.5
+        above = -p.z / self.dz - 1.0  # < 0 above the first plane
+        w = dr.maximum(above, 0.0)
+        inside = mi.Bool(active) & (u >= 0.0) & (v >= 0.0) & (u <= n - 1.0) & (v <= n - 1.0) & (w <= planes - 1.0)
+        ju, iv, kw = dr.floor(u), dr.floor(v), dr.floor(w)
+        fu, fv, fw = u - ju, v - iv, w - kw
+        j0 = dr.minimum(mi.UInt32(dr.maximum(ju, 0.0)), n - 2)
+        i0 = dr.minimum(mi.UInt32(dr.maximum(iv, 0.0)), n - 2)
+        k0 = dr.minimum(mi.UInt32(dr.maximum(kw, 0.0)), planes - 2)
+        sums = [mi.Float(0.0) for _ in range(self.CHANNELS)]
+        for dk, sk in ((0, 1 - fw), (1, fw)):
+            for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
+                                  (1, 1, fu * fv)):
+                index = ((k0 + dk) * n + i0 + di) * n + j0 + dj
+                for c in range(self.CHANNELS):
+                    sums[c] += sk * share * dr.gather(mi.Float, self.values[c], index, inside)
+        e, es, ex, ey = sums
+        positive = e > 0.0
+        scale = dr.select(positive, 1.0 / dr.maximum(e, 1e-30), 0.0)
+        mx, my = ex * scale, ey * scale  # the weighted mean of the rays' horizontal components
+        direction = dr.normalize(mi.Vector3f(mx, my, -dr.sqrt(dr.maximum(1.0 - mx * mx - my * my, 1e-6))))
+        # above the first plane (within dz of the surface) the beam has come a shorter way: the first
+        # plane's mean path less the height over it along the beam (the irradiance is the plane's)
+        path = dr.maximum(es * scale + dr.minimum(above, 0.0) * self.dz / dr.maximum(-direction.z, 1e-3), 0.0)
+        return e, path, direction, inside & positive

@@ -227,7 +227,8 @@ def hero_free_flight_update(weight, pdf_ratio, value, pdf):
 
 
 def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, eta: float = 1.333,
-               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None, water_surface=None, floor=None):
+               alpha: float = 0.2, max_depth: int, rr_depth: int, last=None, water_surface=None, floor=None,
+               volume=None):
     """Radiance along ``ray`` [W m⁻² sr⁻¹ nm⁻¹], in air or in the water, to the end of its path.
 
     A path tracer for a scene of vacuum and homogeneous media inside dielectric
@@ -277,6 +278,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
                                           (:class:`~oceanrender.render.sun_beam.FloorCaustics`): at
                                           a floor vertex inside its map the sun comes from the map,
                                           and no strategy reaches the sun's cone from there.
+    volume : VolumeBeam, optional         The same in the water's volume, at scattering vertices
+                                          (:class:`~oceanrender.render.sun_beam.VolumeBeam`): the shafts.
 
     Returns
     -------
@@ -286,6 +289,12 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
     import mitsuba as mi  # noqa: PLC0415
 
     sample_lobe, pdf_lobe = sun_lobe_functions()
+    beam_maps = [m for m in (floor, volume) if m is not None]  # the sun's beam traced into maps
+
+    def in_cone(direction):
+        """Directions in the air inside the sun's cone (the maps' sun)."""
+        return beam_maps[0].in_cone(direction)
+
     sun_sampling = sun is not None
     if sun_sampling:
         # NOTE: Python floats become literals in the traced kernel; an (opaque) Vector3f is used as is.
@@ -329,8 +338,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # path's wavelength densities, so the weight W of the vertex applies as it is.
         transmittance = dr.exp(-sigma_t * si_b.t)
         light, p_e, p_s, valid, d_air = through_surface(si_b, bsdf_b, sampler, on)
-        if floor is not None:
-            valid &= ~(no_sun & floor.in_cone(d_air))
+        if beam_maps:
+            valid &= ~(no_sun & in_cone(d_air))
         w = _power_heuristic3(q * p_e, p_x * p_e, p_x * p_s)
         contribution = weight * f_x * transmittance * light * (w / dr.select(q > 0, q, 1.0))
         return dr.select(valid, contribution, 0.0)
@@ -339,7 +348,7 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         return active
 
     def body(sampler, ray, W, S, L, depth, active, medium, prev_r, prev_in_water, last_it, last_pdf, last_delta,
-             last_r, prev_floor, from_floor):
+             last_r, prev_map, from_map):
         # ---- Russian roulette on the throughput after rr_depth vertices (as volpath).
         q_rr = dr.minimum(dr.max(W), 0.99)
         roulette = active & (depth >= rr_depth)
@@ -365,8 +374,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         ds = mi.DirectionSample3f(scene, si, last_it)
         p_e = scene.pdf_emitter_direction(last_it, ds, hit_emitter & ~last_delta)
         w_c = dr.select(last_delta, 1.0, _power_heuristic3(last_pdf, p_e, last_r * p_e))
-        if floor is not None:  # the floor's direct sun (strategy C of a floor vertex) is the map's
-            hit_emitter &= ~(from_floor & floor.in_cone(ray.d))
+        if beam_maps:  # the direct sun of a vertex in a map (its strategy C) is the map's
+            hit_emitter &= ~(from_map & in_cone(ray.d))
         L += dr.select(hit_emitter, W * emitter.eval(si, hit_emitter) * w_c, 0.0)
 
         # ---- In the water: free flight on the hero channel.
@@ -407,8 +416,17 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
             value, pdf = phase.eval_pdf(phase_ctx, mei, d, on)
             return mi.Spectrum(value), pdf
 
+        in_volume = mi.Bool(False)
+        if volume is not None:
+            # The sun's beam in the volume from the map: σ_s p(θ) E₀ E_n(λ) exp(−σ_t s̄) (W_s holds σ_s),
+            # p towards the beam's mean direction.
+            e_v, path_v, beam_d, inside_v = volume.at(mei.p, scatter)
+            in_volume = scatter & inside_v
+            phase_v, _ = phase.eval_pdf(phase_ctx, mei, -beam_d, in_volume)
+            beam_v = e_v * volume.sun_irradiance(si.wavelengths, in_volume) * dr.exp(-sigma_t * path_v)
+            L += dr.select(in_volume, W_s * mi.Spectrum(phase_v) * beam_v, 0.0)
         if sun_sampling:
-            L += sun_strategy(mei, phase_f_pdf, W_s, sigma_t, sampler, scatter)
+            L += sun_strategy(mei, phase_f_pdf, W_s, sigma_t, sampler, scatter, in_volume)
         wo, phase_w, phase_pdf = phase.sample(phase_ctx, mei, sampler.next_1d(scatter), sampler.next_2d(scatter),
                                               scatter)
         r_phase = pdf_lobe(wo, sun_v, eta, alpha) / dr.select(phase_pdf > 0, phase_pdf, 1.0) if sun_sampling else 0.0
@@ -439,8 +457,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # and share one emitter sample: the same weight, D's with the flight's transmittance.)
         nee = surface & smooth & (in_air | (water_bsdf & ~prev_in_water))
         light, p_e, p_s, valid, d_air = through_surface(si, bsdf, sampler, connect | nee)
-        if floor is not None:  # D from a floor vertex: its sun is the map's
-            valid &= ~(connect & prev_floor & floor.in_cone(d_air))
+        if beam_maps:  # D from a vertex in a map: its sun is the map's
+            valid &= ~(connect & prev_map & in_cone(d_air))
         w_ad = _power_heuristic3(p_e, prev_r * p_e, p_s)
         light = dr.select(connect, W_d * dr.exp(-sigma_t * si.t) * light, W * light)
         L += dr.select(valid, light * w_ad, 0.0)
@@ -469,14 +487,14 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         W = dr.select(scatter, W_s * phase_w, dr.select(sample_surface, W * bsdf_w, W))
         prev_r = dr.select(scatter, r_phase,
                            dr.select(sample_surface, dr.select(opaque_in_water & ~delta, r_surface, 0.0), prev_r))
-        # a path that leaves the water through the surface straight from a floor vertex (C: its sun is the map's)
-        from_floor = sample_surface & water_bsdf & prev_floor & transmits
-        prev_floor = sample_surface & at_floor
+        # a path that leaves the water through the surface straight from a vertex in a map (C: its sun is the map's)
+        from_map = sample_surface & water_bsdf & prev_map & transmits
+        prev_map = (scatter & in_volume) | (sample_surface & at_floor)
         prev_in_water = scatter | (sample_surface & opaque_in_water)
         active = (scatter & (phase_pdf > 0)) | sample_surface
         active &= dr.any(W != 0.0)
         return (sampler, ray, W, S, L, depth, active, medium, prev_r, prev_in_water, last_it, last_pdf, last_delta,
-                last_r, prev_floor, from_floor)
+                last_r, prev_map, from_map)
 
     state = (sampler, mi.Ray3f(ray), mi.Spectrum(1.0), mi.Spectrum(1.0), mi.Spectrum(0.0), mi.UInt32(0), active,
              mi.MediumPtr(medium), mi.Float(0.0), mi.Bool(False), last_it, last_pdf, last_delta, mi.Float(0.0),

@@ -139,6 +139,13 @@ class RenderSettings(_Section):
         24.0, gt=0, le=400,
         description="side of the floor's caustic map, centred under the camera [m]; beyond it the path tracer's "
                     "connections")
+    shaft_cell: float = Field(
+        0.0, ge=0, le=2.0,
+        description="('split', fields shading) side of the cells of the planes of the sun's beam traced through "
+                    "the sea into the water's volume (the shafts) [m], planes every 0.5 m down to shaft_depth over "
+                    "caustic_window (docs/sunlight.md); 0: off, the volume's sunlight from the path tracer's "
+                    "connections")
+    shaft_depth: float = Field(12.0, gt=0, le=200, description="depth the shafts' planes reach below the mean level [m]")
     denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
     surface_shading: Literal["fields", "vertex"] = Field(
         "fields", description="'fields': every water hit shaded from the sea's fields at its footprint (FFT sea, "
