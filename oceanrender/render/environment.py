@@ -28,7 +28,7 @@ from .irradiance import sky_irradiance_spectra
 from .scene import K_M, irregular_spectrum, meter_reading, sun_direction, sunsky_emitter, white_plane_meter, xyz_film
 
 __all__ = ["ENVIRONMENT_SUFFIXES", "EnvironmentMapProblem", "read_environment_map", "sky_emitters",
-           "environment_scale", "map_illuminance"]
+           "environment_scale", "map_illuminance", "sun_normal_irradiance"]
 
 #: Files an environment map may be.
 ENVIRONMENT_SUFFIXES = (".exr", ".hdr")
@@ -132,10 +132,10 @@ def sun_emitter(sun) -> dict:
     """
     towards = -sun_direction(sun.elevation, sun.azimuth)
     return {"type": "directional", "direction": [float(v) for v in towards],
-            "irradiance": irregular_spectrum(np.array(SUN_WAVELENGTHS_NM), np.maximum(_sun_irradiance(sun), 0.0))}
+            "irradiance": irregular_spectrum(np.array(SUN_WAVELENGTHS_NM), np.maximum(sun_normal_irradiance(sun), 0.0))}
 
 
 @functools.lru_cache(maxsize=8)
-def _sun_irradiance(sun) -> np.ndarray:
+def sun_normal_irradiance(sun) -> np.ndarray:
     """Direct-normal irradiance of ``sunsky``'s sun at :data:`SUN_WAVELENGTHS_NM` [W m⁻² nm⁻¹], measured once per sun."""
     return sky_irradiance_spectra(sun, np.array(SUN_WAVELENGTHS_NM), spp=SUN_SPP)[0]

@@ -439,26 +439,22 @@ class WaterRenderer:
                        camera_position=np.asarray(settings.camera.position, float), n_water=water_ior(settings),
                        object_ids=tuple(object_id(o.name) for o in objects), shading=shading,
                        sun_settings=settings.sun)
-        floor = next((shape for shape in scene.shapes() if shape.id() == SEAFLOOR_ID), None)
         import drjit as dr  # noqa: PLC0415
 
-        if render.caustic_cell > 0 and shading is not None and floor is not None and sun_sampling \
-                and render.integrator == "split" and dr.is_jit_v(mi.Float):  # trace_path: JIT variants
-            from .sun_beam import FloorCaustics  # noqa: PLC0415
+        # the sun's beam traced into maps: the split integrator's in-water tracer (JIT variants), fields shading
+        if shading is not None and sun_sampling and render.integrator == "split" and dr.is_jit_v(mi.Float):
+            from .sun_beam import SHAFT_PLANE_STEP, FloorCaustics, VolumeBeam  # noqa: PLC0415
 
-            renderer.floor_caustics = FloorCaustics(floor, -settings.water.depth + SEAFLOOR_LIFT_M,
-                                                    render.caustic_cell, render.caustic_window, water_ior(settings))
+            floor = next((shape for shape in scene.shapes() if shape.id() == SEAFLOOR_ID), None)
+            if render.caustic_cell > 0 and floor is not None:
+                renderer.floor_caustics = FloorCaustics(floor, -settings.water.depth + SEAFLOOR_LIFT_M,
+                                                        render.caustic_cell, render.caustic_window,
+                                                        water_ior(settings))
+            if render.shaft_cell > 0:
+                renderer.volume_beam = VolumeBeam(render.shaft_cell, SHAFT_PLANE_STEP, render.caustic_window,
+                                                  min(render.shaft_depth, settings.water.depth), water_ior(settings))
             for integrator in renderer.integrators():
-                integrator.floor_caustics = renderer.floor_caustics
-        if render.shaft_cell > 0 and shading is not None and sun_sampling and render.integrator == "split" \
-                and dr.is_jit_v(mi.Float):
-            from .sun_beam import SHAFT_PLANE_STEP, VolumeBeam  # noqa: PLC0415
-
-            depth = min(render.shaft_depth, settings.water.depth)
-            renderer.volume_beam = VolumeBeam(render.shaft_cell, SHAFT_PLANE_STEP, render.caustic_window, depth,
-                                              water_ior(settings))
-            for integrator in renderer.integrators():
-                integrator.volume_beam = renderer.volume_beam
+                integrator.floor_caustics, integrator.volume_beam = renderer.floor_caustics, renderer.volume_beam
         renderer.update_caustics(geometry)
         return renderer
 
@@ -553,9 +549,7 @@ class WaterRenderer:
         maps = [m for m in (self.floor_caustics, self.volume_beam) if m is not None]
         if not maps or geometry.shading is None:
             return
-        from dataclasses import replace  # noqa: PLC0415
-
-        from .environment import SUN_WAVELENGTHS_NM, _sun_irradiance  # noqa: PLC0415
+        from .environment import SUN_WAVELENGTHS_NM, sun_normal_irradiance  # noqa: PLC0415
 
         # the meter's render and the frame's both load the same geometry: one map for both
         key = (tuple(np.asarray(self.camera_position, float)), self.sun_angles)
@@ -564,12 +558,10 @@ class WaterRenderer:
             return
         self.caustics_for = (geometry.shading, key)
         sun = self.sun_settings
-        angles = self.sun_angles
-        if angles is not None:
-            sun = sun.model_copy(update={"elevation": angles[0], "azimuth": angles[1]}) \
-                if hasattr(sun, "model_copy") else replace(sun, elevation=angles[0], azimuth=angles[1])
+        if self.sun_angles is not None:
+            sun = sun.model_copy(update={"elevation": self.sun_angles[0], "azimuth": self.sun_angles[1]})
         for beam_map in maps:
-            beam_map.update(self.shading, sun_direction(sun.elevation, sun.azimuth), _sun_irradiance(sun),
+            beam_map.update(self.shading, sun_direction(sun.elevation, sun.azimuth), sun_normal_irradiance(sun),
                             SUN_WAVELENGTHS_NM, self.camera_position[:2])
 
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
@@ -614,7 +606,6 @@ class WhiteMeter:
     def point_sun(self, elevation: float, azimuth: float) -> None:
         """Move the sun to ``elevation`` (> 0) and ``azimuth`` clockwise from north [deg], in place."""
         apply_sun(self.params, SunAngles(float(elevation), float(azimuth)), emitter="sky")
-        self.sun_angles = (float(elevation), float(azimuth))
 
     def measure(self, seed: int = 0) -> np.ndarray:
         """XYZ [cd m⁻²] of the white plane under the current sun and sky."""

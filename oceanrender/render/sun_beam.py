@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-__all__ = ["sun_rays", "splat_plane", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
+__all__ = ["sun_rays", "splat_plane", "ray_window", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
 
 
 def sun_rays(shading, sun, n_water: float, window: tuple[float, float, float], ray: float):
@@ -136,6 +136,24 @@ SUN_CONE = 1.05 * SUN_RADIUS
 RAYS_PER_CELL = 4
 
 
+def ray_window(sun, n_water: float, centre, side: float, depths: tuple[float, float]):
+    """(corner (x₀, y₀) [m] of a square map of ``side`` [m] centred on ``centre``, the rest window
+    (x, y, side) [m] of the sun's rays that reach it on planes from ``depths[0]`` to ``depths[1]`` [m] down).
+
+    The flat sea's refracted beam lands a horizontal distance d tan θ_t down-sun of where it left
+    the surface at depth d; the window covers that shift over the range of depths, plus a margin
+    of 0.35 d + 1 m for the tilted facets and the choppy displacement.
+    """
+    sin_t = math.hypot(sun[0], sun[1]) / n_water
+    horizontal = -np.asarray(sun[:2]) / max(math.hypot(sun[0], sun[1]), 1e-12) * sin_t
+    shifts = [horizontal * d / math.sqrt(1.0 - sin_t * sin_t) for d in depths]
+    lo, hi = np.minimum(*shifts), np.maximum(*shifts)
+    margin = 0.35 * max(depths) + 1.0
+    x0 = float(centre[0]) - side / 2
+    y0 = float(centre[1]) - side / 2
+    return (x0, y0), (x0 - hi[0] - margin, y0 - hi[1] - margin, side + float(np.max(hi - lo)) + 2 * margin)
+
+
 class _BeamMap:
     """What the maps of the sun's beam share in the render kernel: the sun's cone and its spectrum."""
 
@@ -209,14 +227,7 @@ class FloorCaustics(_BeamMap):
 
         sun = np.asarray(sun, float) / np.linalg.norm(sun)
         depth = max(-self.z, 0.0)
-        # the flat sea's refracted beam: where the rays that reach the map left the surface
-        sin_t = math.hypot(sun[0], sun[1]) / self.n_water
-        horizontal = -np.asarray(sun[:2]) / max(math.hypot(sun[0], sun[1]), 1e-12) * sin_t
-        shift = horizontal * depth / math.sqrt(1.0 - sin_t * sin_t)
-        margin = 0.35 * depth + 1.0  # tilted facets and the choppy displacement
-        x0 = float(centre[0]) - self.side / 2
-        y0 = float(centre[1]) - self.side / 2
-        window = (x0 - shift[0] - margin, y0 - shift[1] - margin, self.side + 2 * margin)
+        (x0, y0), window = ray_window(sun, self.n_water, centre, self.side, (depth, depth))
         rays = sun_rays(shading, sun, self.n_water, window, self.cell / RAYS_PER_CELL)
         power, path_power = splat_plane(*rays, self.z, (x0, y0), self.cell, (self.count, self.count),
                                         weights=(None, lambda s: s))
@@ -303,18 +314,8 @@ class VolumeBeam(_BeamMap):
         import mitsuba as mi  # noqa: PLC0415
 
         sun = np.asarray(sun, float) / np.linalg.norm(sun)
-        depth = self.planes * self.dz
-        sin_t = math.hypot(sun[0], sun[1]) / self.n_water
-        horizontal = -np.asarray(sun[:2]) / max(math.hypot(sun[0], sun[1]), 1e-12) * sin_t
-        slope = 1.0 / math.sqrt(1.0 - sin_t * sin_t)
-        x0 = float(centre[0]) - self.side / 2
-        y0 = float(centre[1]) - self.side / 2
         # every plane's rays leave the surface up-sun of it: the rays' window covers them all
-        lo = np.minimum(0.0, horizontal * depth * slope)
-        hi = np.maximum(0.0, horizontal * depth * slope)
-        margin = 0.35 * depth + 1.0
-        side = self.side + float(np.max(hi - lo)) + 2 * margin
-        window = (x0 - hi[0] - margin, y0 - hi[1] - margin, side)
+        (x0, y0), window = ray_window(sun, self.n_water, centre, self.side, (0.0, self.planes * self.dz))
         points, direction, power, lit = sun_rays(shading, sun, self.n_water, window,
                                                  self.cell / VOLUME_RAYS_PER_CELL)
         inverse = 1.0 / dr.maximum(-direction.z, 1e-6)
