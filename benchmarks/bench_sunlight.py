@@ -1,11 +1,15 @@
-"""Issue 41: the cost of tracing the sun's beam onto the floor's map per frame, side by side with the path tracer alone.
+"""Issue 41: the cost of the sun's beam maps per frame, side by side with the path tracer alone.
 
-Run: ``.venv/bin/python benchmarks/bench_sunlight.py [--size 64x36 --spp 4 --frames 2]``.
+Run: ``.venv/bin/python benchmarks/bench_sunlight.py [--size 64x36 --spp 4 --frames 2]`` (the floor's map),
+``.venv/bin/python benchmarks/bench_sunlight.py --volume [--size 320x180 --spp 32 --frames 1]`` (the volume's).
 
-``scenes/under_water_floor.toml`` in one process, for ``[render] caustic_cell`` 0.02 m (the map)
-and 0 (the path tracer's connections alone): a sequence is built, frame 0 computed once (JIT,
-the sun's spectrum), then frames 1..N timed. The map is built lazily, in the render kernel's
-first pass, so its cost shows in the render column. Prints a Markdown table for BENCHMARKS.md.
+In one process, a scene with the map at its cell and with it off (0: the path tracer's connections
+alone): ``scenes/under_water_floor.toml`` and ``[render] caustic_cell`` 0.02 m, or with ``--volume``
+``scenes/under_water_shafts.toml`` and ``shaft_cell`` 0.05 m (the planes, and the beam read along
+every in-water segment: a cost of the render itself, so measured at the scene's own size). A sequence
+is built, frame 0 computed once (JIT, the sun's spectrum), then frames 1..N timed. The map is built
+lazily, in the render kernel's first pass, so its cost shows in the render column. Prints a Markdown
+table for BENCHMARKS.md.
 """
 
 from __future__ import annotations
@@ -25,6 +29,7 @@ def main() -> None:
     parser.add_argument("--size", default="64x36")
     parser.add_argument("--spp", type=int, default=4)
     parser.add_argument("--frames", type=int, default=2)
+    parser.add_argument("--volume", action="store_true", help="the volume's planes (under_water_shafts) instead")
     args = parser.parse_args()
     warnings.filterwarnings("ignore", message=".*Matplotlib.*")
 
@@ -32,12 +37,13 @@ def main() -> None:
     from oceanrender.runtime.variants import activate_variant
     from oceanrender.scene.settings import scene_from_dict
 
-    path = ROOT / "scenes" / "under_water_floor.toml"
+    path = ROOT / "scenes" / ("under_water_shafts.toml" if args.volume else "under_water_floor.toml")
+    key, on = ("shaft_cell", 0.05) if args.volume else ("caustic_cell", 0.02)
     width, height = (int(v) for v in args.size.split("x"))
     rows = {}
-    for cell in (0.02, 0.0):
+    for cell in (on, 0.0):
         data = tomllib.loads(path.read_text())
-        data["render"]["caustic_cell"] = cell
+        data["render"][key] = cell
         data["output"].update(resolution=[width, height], spp=args.spp)
         scene = scene_from_dict(data, str(path))
         runtime = activate_variant(scene.render.variant)
@@ -52,16 +58,16 @@ def main() -> None:
                 totals[stage] = totals.get(stage, 0.0) + seconds
         wall = (time.perf_counter() - tic) / args.frames
         rows[cell] = (first, {k: v / args.frames for k, v in totals.items()}, wall)
-    print(f"# under_water_floor: {width}x{height}, {args.spp} spp, variant {runtime.variant}, "
+    print(f"# {path.stem}: {width}x{height}, {args.spp} spp, variant {runtime.variant}, "
           f"{platform.processor() or platform.machine()}; {args.frames} frames timed per mode after one warm-up")
     print()
-    print("| caustic_cell [m] | first frame [s] | geometry [s/frame] | update [s/frame] | render [s/frame] | frame, wall [s] |")
+    print(f"| {key} [m] | first frame [s] | geometry [s/frame] | update [s/frame] | render [s/frame] | frame, wall [s] |")
     print("|---:|---:|---:|---:|---:|---:|")
     for cell, (first, per, wall) in rows.items():
         print(f"| {cell:g} | {first:.1f} | {per.get('geometry', 0):.2f} | {per.get('update', 0):.2f} "
               f"| {per.get('render', 0):.2f} | {wall:.2f} |")
     print()
-    print(f"the map's cost per frame: {rows[0.02][2] - rows[0.0][2]:.2f} s")
+    print(f"the map's cost per frame: {rows[on][2] - rows[0.0][2]:.2f} s ({rows[on][2] / rows[0.0][2]:.2f}x)")
 
 
 if __name__ == "__main__":

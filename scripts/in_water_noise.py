@@ -9,8 +9,18 @@ each of ``--spp`` with ``--seeds`` seeds. Each noisy frame is reflected + in-wat
 ΔE00 per pixel against reflected + reference (CIELAB of XYZ over the scene's adapting white,
 colour-science), and the relative RMS error of the in-water luminance. Prints one JSON line.
 
+The reference's own noise is a floor under those errors (at 2048 spp its relative RMS is about
+half the in-water luminance per pixel of this view), so each setting's noise alone is also given,
+from pairs of its independent frames: ΔE00 between them over √2 and the RMS of their in-water
+luminance difference over √2 (a proxy, ΔE00 not being linear, the same for every setting).
+
+With ``--shaft-cell`` (> 0) the noisy frames are also rendered with the sun's beam in the volume
+(``[render] shaft_cell``: docs/sunlight.md) at ``--shaft-spp``, against the same reference (the
+path tracer alone), so its bias is part of its error; the JSON line then also holds the frame's
+in-water mean luminance of each setting over the reference's.
+
 Usage: python scripts/in_water_noise.py [--scene scenes/open_ocean.toml] [--size 320x180]
-       [--spp 16,64] [--seeds 4] [--reference-spp 2048]
+       [--spp 16,64] [--seeds 4] [--reference-spp 2048] [--shaft-cell 0.1 --shaft-spp 16,64]
 """
 
 from __future__ import annotations
@@ -32,6 +42,10 @@ def main() -> None:
     parser.add_argument("--spp", default="16,64")
     parser.add_argument("--seeds", type=int, default=4)
     parser.add_argument("--reference-spp", type=int, default=2048)
+    parser.add_argument("--shaft-cell", type=float, default=0.0)
+    parser.add_argument("--reference-cache", default=None,
+                        help="an .npz to keep the reference passes in (reused when it exists: same scene, size, spp)")
+    parser.add_argument("--shaft-spp", default="16,64")
     args = parser.parse_args()
 
     import colour
@@ -55,8 +69,15 @@ def main() -> None:
         return np.asarray(film_to_absolute_XYZ(film[..., :3]), float)
 
     tic = time.perf_counter()
-    reflected = xyz(render_passes(renderer.scene, args.reference_spp, 1_000_003))
-    reference = xyz(render_passes(renderer.scene, args.reference_spp, 2_000_003, renderer.in_water))
+    cache = Path(args.reference_cache) if args.reference_cache else None
+    key = f"{Path(args.scene).stem} {width}x{height} {args.reference_spp}"
+    if cache is not None and cache.exists() and str(np.load(cache)["key"]) == key:
+        reflected, reference = np.load(cache)["reflected"], np.load(cache)["reference"]
+    else:
+        reflected = xyz(render_passes(renderer.scene, args.reference_spp, 1_000_003))
+        reference = xyz(render_passes(renderer.scene, args.reference_spp, 2_000_003, renderer.in_water))
+        if cache is not None:
+            np.savez_compressed(cache, key=key, reflected=reflected, reference=reference)
     reference_seconds = time.perf_counter() - tic
 
     def lab(values):
@@ -66,18 +87,41 @@ def main() -> None:
     result = {"scene": Path(args.scene).stem, "size": [width, height], "reference_spp": args.reference_spp,
               "reference_seconds": round(reference_seconds, 1),
               "in_water_share_of_Y": float(reference[..., 1].mean() / (reflected + reference)[..., 1].mean())}
-    for spp in (int(s) for s in args.spp.split(",")):
-        delta, rms, seconds = [], [], []
-        for seed in range(args.seeds):
-            tic = time.perf_counter()
-            noisy = xyz(render_passes(renderer.scene, spp, 17 + 7919 * seed, renderer.in_water))
-            seconds.append(time.perf_counter() - tic)
-            delta.append(float(np.mean(colour.delta_E(target, lab(reflected + noisy), method="CIE 2000"))))
-            rms.append(float(np.sqrt(np.mean((noisy[..., 1] - reference[..., 1]) ** 2)) / reference[..., 1].mean()))
-        result[f"spp_{spp}"] = {"delta_E00_mean": round(float(np.mean(delta)), 4),
-                                "delta_E00_seeds": [round(v, 4) for v in delta],
-                                "relative_rms_Y": round(float(np.mean(rms)), 4),
-                                "seconds": round(float(np.mean(seconds)), 2)}
+    def noisy(scene_renderer, spp_list, label):
+        for spp in (int(s) for s in spp_list.split(",")):
+            delta, rms, seconds, means, frames = [], [], [], [], []
+            for seed in range(args.seeds):
+                tic = time.perf_counter()
+                frame = xyz(render_passes(scene_renderer.scene, spp, 17 + 7919 * seed, scene_renderer.in_water))
+                seconds.append(time.perf_counter() - tic)
+                frames.append(frame)
+                delta.append(float(np.mean(colour.delta_E(target, lab(reflected + frame), method="CIE 2000"))))
+                rms.append(float(np.sqrt(np.mean((frame[..., 1] - reference[..., 1]) ** 2)) / reference[..., 1].mean()))
+                means.append(float(frame[..., 1].mean() / reference[..., 1].mean()))
+            result[f"{label}spp_{spp}"] = {"delta_E00_mean": round(float(np.mean(delta)), 4),
+                                           "delta_E00_seeds": [round(v, 4) for v in delta],
+                                           "relative_rms_Y": round(float(np.mean(rms)), 4),
+                                           "mean_Y_over_reference": round(float(np.mean(means)), 4),
+                                           # the noise alone (the reference's own noise and the bias left out):
+                                           # two independent frames of the same setting, ΔE00 between them / √2
+                                           # and the RMS of their in-water luminance difference / √2 over the mean
+                                           "delta_E00_between_seeds": round(float(np.mean([np.mean(colour.delta_E(
+                                               lab(reflected + frames[i]), lab(reflected + frames[i + 1]),
+                                               method="CIE 2000")) for i in range(0, len(frames) - 1, 2)])
+                                               / np.sqrt(2.0)), 4),
+                                           "relative_rms_Y_between_seeds": round(float(np.mean([np.sqrt(np.mean(
+                                               (frames[i][..., 1] - frames[i + 1][..., 1]) ** 2) / 2.0)
+                                               / reference[..., 1].mean() for i in range(0, len(frames) - 1, 2)])), 4),
+                                           "seconds": round(float(np.mean(seconds)), 2)}
+
+    noisy(renderer, args.spp, "")
+    if args.shaft_cell > 0:
+        beam_scene = with_overrides(scene, render={"shaft_cell": args.shaft_cell})
+        beam_sequence = Sequence(beam_scene, runtime.variant)
+        beam_sequence.point(0)
+        beam_sequence.renderer.update_water(beam_sequence.geometry(0))
+        result["shaft_cell"] = args.shaft_cell
+        noisy(beam_sequence.renderer, args.shaft_spp, "beam_")
     print(json.dumps(result))
 
 

@@ -271,6 +271,31 @@ class FloorCaustics(_BeamMap):
 #: Spacing of the volume's planes [m].
 SHAFT_PLANE_STEP = 0.5
 
+#: Highest point of the water [m over the mean level] at which the volume's beam is read (above every crest).
+BEAM_TOP = 10.0
+
+#: Half-width of the region [m] around the window in which the volume's beam is read: beyond the window, the
+#: window's mean profile (far past any visible sea: the camera's water body ends at its outer radius).
+BEYOND_WINDOW = 1.0e6
+
+
+def flat_beam_shear(sun, n_water: float) -> tuple[float, float]:
+    """(d_x/d_z, d_y/d_z) of the flat sea's refracted beam [-]: a ray that leaves the mean level at (x, y) is at
+    (x, y) + z (d_x/d_z, d_y/d_z) at height z < 0 (Snell's law, sin θ_t = sin θ_i / n)."""
+    sun = np.asarray(sun, float) / np.linalg.norm(sun)
+    sin_i = math.hypot(sun[0], sun[1])
+    if sin_i < 1e-12:
+        return 0.0, 0.0
+    sin_t = sin_i / n_water
+    tan_t = sin_t / math.sqrt(1.0 - sin_t * sin_t)
+    return float(sun[0] / sin_i * tan_t), float(sun[1] / sin_i * tan_t)
+
+
+#: Points per in-water segment at which the volume's beam is read (:meth:`VolumeBeam.along`) [-]: on a path's
+#: first in-water segment, and on the later ones.
+SHAFT_MARCH_POINTS = 8
+SHAFT_MARCH_POINTS_AFTER = 2
+
 #: Rays per cell side of the volume's planes [-] (the shafts are seen integrated along the view: fewer than the floor).
 VOLUME_RAYS_PER_CELL = 2
 
@@ -279,16 +304,20 @@ class VolumeBeam(_BeamMap):
     """The sun's beam in the water's volume — the shafts — traced per frame onto horizontal planes.
 
     Planes every ``dz`` [m] from ``dz`` below the mean level down ``depth`` [m], each a square of
-    ``side`` [m] in cells of ``cell`` [m] centred under the camera. Per cell, from the rays that
-    land in it: the beam's scalar irradiance Σ P/|d_z| over the cell's area (per W m⁻² of the sun,
-    unattenuated: the flux through a horizontal cell over the cosine of each ray's direction), the
-    same weighted by the path length s from the surface and by the rays' horizontal directions
-    (their power-weighted mean direction). At a scattering vertex inside the planes the tracer adds
-    σ_s p(θ) E₀ E_n(λ) exp(−σ_t s̄), θ between the beam's mean direction and the view, trilinear
-    between cells and planes, and leaves out every strategy that reaches the sun's cone from there.
+    ``side`` [m] in cells of ``cell`` [m] centred under the camera and sheared along the flat sea's
+    refracted beam (plane k's cells start z_k (d_x/d_z, d_y/d_z) from the corner: a shaft stays in its
+    cells from plane to plane). Per cell, from the rays that land in it: the beam's scalar irradiance
+    Σ P/|d_z| over the cell's area (per W m⁻² of the sun, unattenuated: the flux through a horizontal
+    cell over the cosine of each ray's direction), and the same weighted by the path length s from the
+    surface, its square, and the rays' horizontal directions and their products (the paths' and the
+    directions' means and spreads). Beyond the window each plane's mean over it stands for the beam
+    (the caustics there are not resolved). Along every in-water segment of a path the tracer
+    integrates σ_s p(θ) E₀ E_n(λ) exp(−σ_t s̄) (:meth:`along`), and at a scattering vertex inside the
+    planes' depths it leaves out every strategy that reaches the sun's cone (docs/sunlight.md).
     """
 
-    CHANNELS = 4  # Σ P/|d_z|, Σ P s/|d_z|, Σ P d_x/|d_z|, Σ P d_y/|d_z|
+    #: Σ P w/|d_z| for w = 1, s, d_x, d_y, s², d_x², d_y², d_x d_y
+    CHANNELS = 8
 
     def __init__(self, cell: float, dz: float, side: float, depth: float, n_water: float):
         import drjit as dr  # noqa: PLC0415
@@ -299,72 +328,201 @@ class VolumeBeam(_BeamMap):
         self.side = self.count * self.cell
         self.planes = max(2, int(round(float(depth) / self.dz)))
         size = self.planes * self.count * self.count
-        self.values = [dr.zeros(mi.Float, size) for _ in range(self.CHANNELS)]
+        #: the planes' cells, their CHANNELS sums side by side (one cell: two Vector4f gathers)
+        self.packed = dr.zeros(mi.Float, size * self.CHANNELS)
+        #: per plane, its cells' CHANNELS sums averaged: the beam read beyond the window
+        self.profile = dr.zeros(mi.Float, self.planes * self.CHANNELS)
         self.origin = mi.Point2f(0.0, 0.0)
-        dr.make_opaque(*self.values, self.origin)
+        self.shear = mi.Point2f(0.0, 0.0)
+        dr.make_opaque(self.packed, self.profile, self.origin, self.shear)
         self.set_sun((0.0, 0.0, 1.0), np.zeros(2), (360.0, 365.0))
+
+    def planes_array(self) -> np.ndarray:
+        """The planes as an array (planes, rows along y, columns along x, CHANNELS): the sums per cell area
+        [W m⁻² per W m⁻² of the sun, times m, m², or the direction's components], plane k at :meth:`height`,
+        its cells from :attr:`origin` + z_k · :attr:`shear` [m]."""
+        return np.asarray(self.packed, np.float64).reshape(self.planes, self.count, self.count, self.CHANNELS)
 
     def height(self, k: int) -> float:
         """Height of plane k [m]: −(k + 1) dz."""
         return -(k + 1) * self.dz
 
     def update(self, shading, sun, sun_spectrum, wavelengths, centre) -> None:
-        """Trace the frame's beam into the planes (as :meth:`FloorCaustics.update`)."""
+        """Trace the frame's beam into the planes (as :meth:`FloorCaustics.update`), each plane's cells
+        sheared along the flat sea's refracted beam (:meth:`at`)."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
         sun = np.asarray(sun, float) / np.linalg.norm(sun)
-        # every plane's rays leave the surface up-sun of it: the rays' window covers them all
-        (x0, y0), window = ray_window(sun, self.n_water, centre, self.side, (0.0, self.planes * self.dz))
+        shear = flat_beam_shear(sun, self.n_water)
+        x0, y0 = float(centre[0]) - self.side / 2, float(centre[1]) - self.side / 2
+        # every plane reads the same window of the surface (the shear follows the flat sea's beam), with
+        # a margin of 0.35 d + 1 m for the tilted facets and the choppy displacement (as ray_window)
+        margin = 0.35 * self.planes * self.dz + 1.0
+        window = (x0 - margin, y0 - margin, self.side + 2 * margin)
         points, direction, power, lit = sun_rays(shading, sun, self.n_water, window,
                                                  self.cell / VOLUME_RAYS_PER_CELL)
         inverse = 1.0 / dr.maximum(-direction.z, 1e-6)
         weights = (lambda s: inverse, lambda s: s * inverse, lambda s: direction.x * inverse,
-                   lambda s: direction.y * inverse)
+                   lambda s: direction.y * inverse, lambda s: s * s * inverse,
+                   lambda s: direction.x * direction.x * inverse, lambda s: direction.y * direction.y * inverse,
+                   lambda s: direction.x * direction.y * inverse)
         n2 = self.count * self.count
         values = [dr.zeros(mi.Float, self.planes * n2) for _ in range(self.CHANNELS)]
         for k in range(self.planes):
-            splat_plane(points, direction, power, lit, self.height(k), (x0, y0), self.cell,
+            z = self.height(k)
+            splat_plane(points, direction, power, lit, z, (x0 + shear[0] * z, y0 + shear[1] * z), self.cell,
                         (self.count, self.count), weights, targets=values, offset=k * n2)
         area = self.cell * self.cell
-        self.values = [v / area for v in values]
+        packed = dr.zeros(mi.Float, self.planes * n2 * self.CHANNELS)
+        cells = dr.arange(mi.UInt32, self.planes * n2)
+        for c, value in enumerate(values):
+            dr.scatter(packed, value / area, cells * self.CHANNELS + c)
+        self.packed = packed
+        # beyond the window: each plane's sums averaged over its cells (the beam's mean over the window)
+        means = np.asarray(packed, np.float64).reshape(self.planes, n2, self.CHANNELS).mean(axis=1)
+        self.profile = mi.Float(means.ravel().astype(np.float32))
         self.origin = mi.Point2f(x0, y0)
-        dr.make_opaque(*self.values, self.origin)
+        self.shear = mi.Point2f(*shear)
+        dr.make_opaque(self.packed, self.profile, self.origin, self.shear)
         self.set_sun(sun, sun_spectrum, wavelengths)
 
     # ---- traced into the render kernel
 
-    def at(self, p, active):
-        """(E₀ [W m⁻² per W m⁻²], s̄ [m], the beam's unit mean direction, inside) at points ``p`` in the water,
-        trilinear between the cells' centres and the planes (above the first plane: the first plane's E₀ and
-        direction, its path shortened by the height over it)."""
+    def bounds(self):
+        """The box [m] inside which :meth:`at` reads the beam: the planes' depths up to :data:`BEAM_TOP` over
+        the mean level (the water above the first plane), and horizontally everywhere (beyond the window,
+        the window's mean profile)."""
+        import mitsuba as mi  # noqa: PLC0415
+
+        far = BEYOND_WINDOW
+        return mi.BoundingBox3f(mi.Point3f(self.origin.x - far, self.origin.y - far, -self.planes * self.dz),
+                                mi.Point3f(self.origin.x + far, self.origin.y + far, BEAM_TOP))
+
+    def along(self, ray, t_end, mei, phase, phase_ctx, weight, sigma_t, sampler, active, first):
+        """The beam once scattered towards the ray's origin along the segment [0, ``t_end``] of ``ray`` [m]:
+
+            ∫ e^{−σ_t t} σ_s p(θ(t)) E₀(t) E_n(λ) e^{−σ_t s̄(t)} dt   [W m⁻² sr⁻¹ nm⁻¹ per unit throughput],
+
+        times ``weight``, estimated from :data:`SHAFT_MARCH_POINTS` points on the lanes' ``first`` in-water
+        segment (the camera's, or the one after its first surface: the shafts the eye sees directly) and
+        :data:`SHAFT_MARCH_POINTS_AFTER` on later ones (light scattered more than once: smooth), stratified in the inverse
+        CDF of e^{−σ_min t} truncated to the part of the segment inside :meth:`bounds` (σ_min the
+        smallest of the lanes' σ_t: every wavelength's integrand then decays at least as fast as the
+        density, and its weight stays below the truncated density's normaliser). The strata's offset is
+        drawn from ``sampler`` (one per segment, with the beam's directions at each point: :meth:`at`); the
+        points' lengths are evaluated, not sampled by the path, so the path's wavelength densities stay as
+        they are (as strategy D).
+        """
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        hit, near, far = self.bounds().ray_intersect(ray)
+        t0 = dr.maximum(near, 0.0)
+        length = dr.minimum(far, t_end) - t0
+        on = mi.Bool(active) & hit & (length > 0.0)
+        length = dr.select(on, length, 0.0)
+        sigma_min = dr.maximum(dr.min(sigma_t), 0.0)
+        optical = sigma_min * length
+        uniform = optical < 1e-4  # (the truncated exponential → uniform)
+        mass = dr.select(optical < 1e-3, optical * (1.0 - 0.5 * optical), 1.0 - dr.exp(-optical))  # 1 − e^{−σ L}
+        sun = self.sun_irradiance(ray.wavelengths, on) * mei.sigma_s * weight
+        # the phase function's interaction: towards the ray's origin (as Mitsuba's free flight sets it)
+        scatterer = dr.zeros(mi.MediumInteraction3f)
+        scatterer.wi = -ray.d
+        scatterer.sh_frame = mi.Frame3f(scatterer.wi)
+        scatterer.wavelengths = ray.wavelengths
+        total = mi.Spectrum(0.0)
+        points = dr.select(mi.Bool(first), mi.Float(SHAFT_MARCH_POINTS), mi.Float(SHAFT_MARCH_POINTS_AFTER))
+        u = sampler.next_1d(on)
+        for i in range(SHAFT_MARCH_POINTS):
+            on_i = on & (points > i) if i >= SHAFT_MARCH_POINTS_AFTER else on
+            xi = (i + u) / points
+            s = dr.select(uniform, xi * length, -dr.log(dr.maximum(1.0 - xi * mass, 1e-30)) / dr.maximum(sigma_min, 1e-30))
+            inverse_pdf = dr.select(uniform, length, mass / dr.maximum(sigma_min, 1e-30) * dr.exp(sigma_min * s))
+            scatterer.p = ray(t0 + s)
+            e, path, spread, direction, inside = self.at(scatterer.p, on_i, sampler.next_2d(on_i))
+            phase_value, _ = phase.eval_pdf(phase_ctx, scatterer, -direction, inside)
+            # e^{−σ_t s} averaged over the cell's paths to second order: exp(−σ_t s̄ + σ_t² var(s)/2), the
+            # correction capped at its first-order size (the cumulant expansion, Jensen's gap of exp(−σ_t s̄))
+            optical_path = sigma_t * (t0 + s + path) - dr.minimum(0.5 * sigma_t * sigma_t * spread, sigma_t * path)
+            value = dr.exp(-optical_path) * (e * phase_value * inverse_pdf / points)
+            total += dr.select(inside, value, 0.0)
+        return dr.select(on, sun * total, 0.0)
+
+    def at(self, p, active, jitter=None):
+        """The beam at points ``p`` in the water, trilinear between the cells' centres and the planes
+        (above the first plane: the first plane's E₀ and directions, its path shortened by the height over it;
+        beyond the window, linear between the planes' means over it, :attr:`profile`).
+
+        Returns (E₀ [W m⁻² per W m⁻² of the sun], s̄ [m], var(s) [m²], a unit direction of the beam, inside).
+        The direction is the rays' power-weighted mean; with ``jitter`` (two uniform numbers in [0, 1)) it
+        is drawn from the Gaussian of the rays' horizontal directions' mean and covariance, so that a phase
+        function evaluated at it is that function averaged over the beam's spread of directions (to the
+        spread's second moments: the rays a cell mixes come from facets of different slopes).
+        """
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
         n, planes = self.count, self.planes
-        u = (p.x - self.origin.x) / self.cell - 0.5
-        v = (p.y - self.origin.y) / self.cell - 0.5
+        # the cells of plane k start at origin + z_k shear: the flat sea's beam line through p meets
+        # every plane at the same (u, v), so a shaft along the beam stays in its cells from plane to plane
+        u = (p.x - self.origin.x - self.shear.x * p.z) / self.cell - 0.5
+        v = (p.y - self.origin.y - self.shear.y * p.z) / self.cell - 0.5
         above = -p.z / self.dz - 1.0  # < 0 above the first plane
         w = dr.maximum(above, 0.0)
-        inside = mi.Bool(active) & (u >= 0.0) & (v >= 0.0) & (u <= n - 1.0) & (v <= n - 1.0) & (w <= planes - 1.0)
+        inside = mi.Bool(active) & (w <= planes - 1.0) & (p.z <= BEAM_TOP)
+        window = inside & (u >= 0.0) & (v >= 0.0) & (u <= n - 1.0) & (v <= n - 1.0)
+        beyond = inside & ~window
         ju, iv, kw = dr.floor(u), dr.floor(v), dr.floor(w)
         fu, fv, fw = u - ju, v - iv, w - kw
         j0 = dr.minimum(mi.UInt32(dr.maximum(ju, 0.0)), n - 2)
         i0 = dr.minimum(mi.UInt32(dr.maximum(iv, 0.0)), n - 2)
         k0 = dr.minimum(mi.UInt32(dr.maximum(kw, 0.0)), planes - 2)
-        sums = [mi.Float(0.0) for _ in range(self.CHANNELS)]
+        # per plane: bilinear sums, normalised to the rays' moments there; between the planes the moments
+        # (not the sums: the path grows by dz/cos θ from plane to plane, no spread within a cell) linearly
+        e, weight, moments = mi.Float(0.0), mi.Float(0.0), [mi.Float(0.0) for _ in range(self.CHANNELS - 1)]
         for dk, sk in ((0, 1 - fw), (1, fw)):
+            sums = [mi.Float(0.0) for _ in range(self.CHANNELS)]
             for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
                                   (1, 1, fu * fv)):
-                index = ((k0 + dk) * n + i0 + di) * n + j0 + dj
+                index = 2 * (((k0 + dk) * n + i0 + di) * n + j0 + dj)
+                first = dr.gather(mi.Vector4f, self.packed, index, window)
+                second = dr.gather(mi.Vector4f, self.packed, index + 1, window)
                 for c in range(self.CHANNELS):
-                    sums[c] += sk * share * dr.gather(mi.Float, self.values[c], index, inside)
-        e, es, ex, ey = sums
+                    sums[c] += share * (first[c] if c < 4 else second[c - 4])
+            # beyond the window: the plane's mean over the window (caustics there are not resolved; the
+            # waves' mean redistribution of the beam is)
+            first = dr.gather(mi.Vector4f, self.profile, 2 * (k0 + dk), beyond)
+            second = dr.gather(mi.Vector4f, self.profile, 2 * (k0 + dk) + 1, beyond)
+            for c in range(self.CHANNELS):
+                sums[c] = dr.select(beyond, first[c] if c < 4 else second[c - 4], sums[c])
+            e += sk * sums[0]
+            lit = sums[0] > 0.0  # (a plane no ray reaches here has no moments: the other plane's)
+            share_k = dr.select(lit, sk, 0.0)
+            weight += share_k
+            # this plane's means (s̄, d̄_x, d̄_y) and (co)variances: a cell's own spread, not the planes' difference
+            m_s, m_x, m_y, m_ss, m_xx, m_yy, m_xy = (sums[c] * dr.select(lit, 1.0 / dr.maximum(sums[0], 1e-30), 0.0)
+                                                     for c in range(1, self.CHANNELS))
+            stats = (m_s, m_x, m_y, m_ss - m_s * m_s, m_xx - m_x * m_x, m_yy - m_y * m_y, m_xy - m_x * m_y)
+            for c, value in enumerate(stats):
+                moments[c] += share_k * value
         positive = e > 0.0
-        scale = dr.select(positive, 1.0 / dr.maximum(e, 1e-30), 0.0)
-        mx, my = ex * scale, ey * scale  # the weighted mean of the rays' horizontal components
-        direction = dr.normalize(mi.Vector3f(mx, my, -dr.sqrt(dr.maximum(1.0 - mx * mx - my * my, 1e-6))))
+        moments = [m / dr.maximum(weight, 1e-30) for m in moments]
+        mean_path, mx, my, spread, cxx, cyy, cxy = moments  # mx, my: the rays' mean horizontal components
+        spread = dr.maximum(spread, 0.0)
         # above the first plane (within dz of the surface) the beam has come a shorter way: the first
-        # plane's mean path less the height over it along the beam (the irradiance is the plane's)
-        path = dr.maximum(es * scale + dr.minimum(above, 0.0) * self.dz / dr.maximum(-direction.z, 1e-3), 0.0)
-        return e, path, direction, inside & positive
+        # plane's mean path less the height over it along the mean beam (the irradiance is the plane's)
+        cos_mean = dr.sqrt(dr.maximum(1.0 - mx * mx - my * my, 1e-6))
+        path = dr.maximum(mean_path + dr.minimum(above, 0.0) * self.dz / cos_mean, 0.0)
+        if jitter is not None:
+            # a draw from N(m, C), C the horizontal components' covariance (its Cholesky factor)
+            cxx, cyy = dr.maximum(cxx, 0.0), dr.maximum(cyy, 0.0)
+            lxx = dr.sqrt(cxx)
+            lyx = dr.select(lxx > 1e-7, cxy / dr.maximum(lxx, 1e-7), 0.0)
+            lyy = dr.sqrt(dr.maximum(cyy - lyx * lyx, 0.0))
+            g = mi.warp.square_to_std_normal(jitter)
+            mx, my = mx + lxx * g.x, my + lyx * g.x + lyy * g.y
+        horizontal = dr.minimum(mx * mx + my * my, 1.0 - 1e-6)
+        direction = dr.normalize(mi.Vector3f(mx, my, -dr.sqrt(1.0 - horizontal)))
+        return e, path, spread, direction, inside & positive

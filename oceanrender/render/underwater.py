@@ -402,6 +402,7 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         W_d = W  # (its emitter sample is drawn with A's, below)
 
         tr, free_pdf = medium.transmittance_eval_pdf(mei, si, in_water)
+        W_f0 = W  # the throughput before the flight (for the beam along the segment)
         W_f, S_f = hero_free_flight_update(W, S, tr, free_pdf)
         W, S = dr.select(in_water, W_f, W), dr.select(in_water, S_f, S)
         depth = dr.select(active, depth + 1, depth)
@@ -418,13 +419,12 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
 
         in_volume = mi.Bool(False)
         if volume is not None:
-            # The sun's beam in the volume from the map: σ_s p(θ) E₀ E_n(λ) exp(−σ_t s̄) (W_s holds σ_s),
-            # p towards the beam's mean direction.
-            e_v, path_v, beam_d, inside_v = volume.at(mei.p, scatter)
-            in_volume = scatter & inside_v
-            phase_v, _ = phase.eval_pdf(phase_ctx, mei, -beam_d, in_volume)
-            beam_v = e_v * volume.sun_irradiance(si.wavelengths, in_volume) * dr.exp(-sigma_t * path_v)
-            L += dr.select(in_volume, W_s * mi.Spectrum(phase_v) * beam_v, 0.0)
+            # The sun's beam once scattered from the map, along the whole segment (W before the flight),
+            # not at the flight's vertex; the vertex only learns that its sun is the map's.
+            # (only where the flight's vertex could scatter: the path's depth bounds its orders as before)
+            L += volume.along(ray, dr.select(si.is_valid(), si.t, dr.inf), mei, phase, phase_ctx, W_f0,
+                              sigma_t, sampler, in_water & (depth < max_depth), depth == 1)
+            in_volume = scatter & volume.at(mei.p, scatter)[4]
         if sun_sampling:
             L += sun_strategy(mei, phase_f_pdf, W_s, sigma_t, sampler, scatter, in_volume)
         wo, phase_w, phase_pdf = phase.sample(phase_ctx, mei, sampler.next_1d(scatter), sampler.next_2d(scatter),

@@ -143,8 +143,8 @@ class RenderSettings(_Section):
         0.0, ge=0, le=2.0,
         description="('split', fields shading) side of the cells of the planes of the sun's beam traced through "
                     "the sea into the water's volume (the shafts) [m], planes every 0.5 m down to shaft_depth over "
-                    "caustic_window (docs/sunlight.md); 0: off, the volume's sunlight from the path tracer's "
-                    "connections")
+                    "caustic_window, sheared along the beam, their mean beyond it, read along every in-water "
+                    "segment (docs/sunlight.md); 0: off, the volume's sunlight from the path tracer's connections")
     shaft_depth: float = Field(12.0, gt=0, le=200, description="depth the shafts' planes reach below the mean level [m]")
     denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
     surface_shading: Literal["fields", "vertex"] = Field(
@@ -1292,5 +1292,5 @@ def with_overrides(scene: Scene, source: str = "command line", **sections: dict)
     data = scene.model_dump()
     for section, values in sections.items():
         if values:
-            data[section] = {**data[section], **values}
+            data[section] = {**(data[section] or {}), **values}  # (an optional section left out: None)
     return scene_from_dict(data, source)
