@@ -69,18 +69,22 @@ def vanishing_point(y: np.ndarray, mask: np.ndarray | None = None, sigma: float 
     return float(column), float(row)
 
 
+def _misalignment(dx, dy, weight, point) -> float:
+    """Weighted median angle [deg] between the streaks (dx, dy) [px] and the lines from their pixels to ``point``."""
+    rows, columns = np.indices(dx.shape, dtype=float)
+    tx, ty = point[0] - columns, point[1] - rows
+    cosine = np.abs(dx * tx + dy * ty) / np.maximum(np.hypot(tx, ty), 1e-9)
+    angle = np.degrees(np.arccos(np.clip(cosine, 0.0, 1.0))).ravel()
+    order = np.argsort(angle)
+    cumulative = np.cumsum(weight.ravel()[order])
+    return float(angle[order][np.searchsorted(cumulative, 0.5 * cumulative[-1])])
+
+
 def streak_misalignment(y: np.ndarray, point, mask: np.ndarray | None = None, sigma: float = 2.0) -> float:
     """Weighted median angle [deg] between each pixel's streak and the line from it to ``point`` (column,
     row) [px]: 0 where every streak points there; 45° for streaks of random directions."""
     dx, dy, weight = streak_field(y, sigma)
-    rows, columns = np.indices(y.shape, dtype=float)
-    tx, ty = point[0] - columns, point[1] - rows
-    cosine = np.abs(dx * tx + dy * ty) / np.maximum(np.hypot(tx, ty), 1e-9)
-    angle = np.degrees(np.arccos(np.clip(cosine, 0.0, 1.0))).ravel()
-    w = (weight if mask is None else weight * mask).ravel()
-    order = np.argsort(angle)
-    cumulative = np.cumsum(w[order])
-    return float(angle[order][np.searchsorted(cumulative, 0.5 * cumulative[-1])])
+    return _misalignment(dx, dy, weight if mask is None else weight * mask, point)
 
 
 def most_aligned_point(y: np.ndarray, mask: np.ndarray | None = None, sigma: float = 2.0, step: float = 4.0):
@@ -88,16 +92,10 @@ def most_aligned_point(y: np.ndarray, mask: np.ndarray | None = None, sigma: flo
     :func:`streak_misalignment` is smallest — a median, robust to the noise's random streaks that pull the
     least-squares :func:`vanishing_point` towards the centre of the weights — and that smallest angle [deg]."""
     dx, dy, weight = streak_field(y, sigma)
-    rows, columns = np.indices(y.shape, dtype=float)
-    w = (weight if mask is None else weight * mask).ravel()
-    half = 0.5 * w.sum()
+    weight = weight if mask is None else weight * mask
 
     def misalignment(point):
-        tx, ty = point[0] - columns, point[1] - rows
-        cosine = np.abs(dx * tx + dy * ty) / np.maximum(np.hypot(tx, ty), 1e-9)
-        angle = np.degrees(np.arccos(np.clip(cosine, 0.0, 1.0))).ravel()
-        order = np.argsort(angle)
-        return float(angle[order][np.searchsorted(np.cumsum(w[order]), half)])
+        return _misalignment(dx, dy, weight, point)
 
     height, width = y.shape
     best = min(((c, r) for c in np.arange(0, width, step) for r in np.arange(0, height, step)), key=misalignment)

@@ -136,19 +136,25 @@ SUN_CONE = 1.05 * SUN_RADIUS
 RAYS_PER_CELL = 4
 
 
+def window_margin(depth: float) -> float:
+    """How far beyond the flat sea's beam [m] the rays that reach ``depth`` [m] down may leave the surface:
+    0.35 d + 1 m, for the tilted facets and the choppy displacement."""
+    return 0.35 * float(depth) + 1.0
+
+
 def ray_window(sun, n_water: float, centre, side: float, depths: tuple[float, float]):
     """(corner (x₀, y₀) [m] of a square map of ``side`` [m] centred on ``centre``, the rest window
     (x, y, side) [m] of the sun's rays that reach it on planes from ``depths[0]`` to ``depths[1]`` [m] down).
 
     The flat sea's refracted beam lands a horizontal distance d tan θ_t down-sun of where it left
-    the surface at depth d; the window covers that shift over the range of depths, plus a margin
-    of 0.35 d + 1 m for the tilted facets and the choppy displacement.
+    the surface at depth d; the window covers that shift over the range of depths, plus
+    :func:`window_margin`.
     """
     sin_t = math.hypot(sun[0], sun[1]) / n_water
     horizontal = -np.asarray(sun[:2]) / max(math.hypot(sun[0], sun[1]), 1e-12) * sin_t
     shifts = [horizontal * d / math.sqrt(1.0 - sin_t * sin_t) for d in depths]
     lo, hi = np.minimum(*shifts), np.maximum(*shifts)
-    margin = 0.35 * max(depths) + 1.0
+    margin = window_margin(max(depths))
     x0 = float(centre[0]) - side / 2
     y0 = float(centre[1]) - side / 2
     return (x0, y0), (x0 - hi[0] - margin, y0 - hi[1] - margin, side + float(np.max(hi - lo)) + 2 * margin)
@@ -337,12 +343,6 @@ class VolumeBeam(_BeamMap):
         dr.make_opaque(self.packed, self.profile, self.origin, self.shear)
         self.set_sun((0.0, 0.0, 1.0), np.zeros(2), (360.0, 365.0))
 
-    def planes_array(self) -> np.ndarray:
-        """The planes as an array (planes, rows along y, columns along x, CHANNELS): the sums per cell area
-        [W m⁻² per W m⁻² of the sun, times m, m², or the direction's components], plane k at :meth:`height`,
-        its cells from :attr:`origin` + z_k · :attr:`shear` [m]."""
-        return np.asarray(self.packed, np.float64).reshape(self.planes, self.count, self.count, self.CHANNELS)
-
     def height(self, k: int) -> float:
         """Height of plane k [m]: −(k + 1) dz."""
         return -(k + 1) * self.dz
@@ -356,9 +356,8 @@ class VolumeBeam(_BeamMap):
         sun = np.asarray(sun, float) / np.linalg.norm(sun)
         shear = flat_beam_shear(sun, self.n_water)
         x0, y0 = float(centre[0]) - self.side / 2, float(centre[1]) - self.side / 2
-        # every plane reads the same window of the surface (the shear follows the flat sea's beam), with
-        # a margin of 0.35 d + 1 m for the tilted facets and the choppy displacement (as ray_window)
-        margin = 0.35 * self.planes * self.dz + 1.0
+        # every plane reads the same window of the surface (the shear follows the flat sea's beam)
+        margin = window_margin(self.planes * self.dz)
         window = (x0 - margin, y0 - margin, self.side + 2 * margin)
         points, direction, power, lit = sun_rays(shading, sun, self.n_water, window,
                                                  self.cell / VOLUME_RAYS_PER_CELL)
@@ -375,13 +374,13 @@ class VolumeBeam(_BeamMap):
                         (self.count, self.count), weights, targets=values, offset=k * n2)
         area = self.cell * self.cell
         packed = dr.zeros(mi.Float, self.planes * n2 * self.CHANNELS)
-        cells = dr.arange(mi.UInt32, self.planes * n2)
+        profile = dr.zeros(mi.Float, self.planes * self.CHANNELS)
+        cells, planes = dr.arange(mi.UInt32, self.planes * n2), dr.arange(mi.UInt32, self.planes)
         for c, value in enumerate(values):
             dr.scatter(packed, value / area, cells * self.CHANNELS + c)
-        self.packed = packed
-        # beyond the window: each plane's sums averaged over its cells (the beam's mean over the window)
-        means = np.asarray(packed, np.float64).reshape(self.planes, n2, self.CHANNELS).mean(axis=1)
-        self.profile = mi.Float(means.ravel().astype(np.float32))
+            # beyond the window: each plane's sums averaged over its cells (the beam's mean over the window)
+            dr.scatter(profile, dr.block_sum(value, n2) / (n2 * area), planes * self.CHANNELS + c)
+        self.packed, self.profile = packed, profile
         self.origin = mi.Point2f(x0, y0)
         self.shear = mi.Point2f(*shear)
         dr.make_opaque(self.packed, self.profile, self.origin, self.shear)
@@ -450,6 +449,54 @@ class VolumeBeam(_BeamMap):
             total += dr.select(inside, value, 0.0)
         return dr.select(on, sun * total, 0.0)
 
+    def _locate(self, p, active):
+        """Where points ``p`` read the planes: (inside, in the window, beyond it, the corner cell (j₀, i₀) and
+        plane k₀, the fractions (f_u, f_v, f_w), the height over the first plane in plane spacings (< 0 above it))."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        n, planes = self.count, self.planes
+        # the cells of plane k start at origin + z_k shear: the flat sea's beam line through p meets
+        # every plane at the same (u, v), so a shaft along the beam stays in its cells from plane to plane
+        u = (p.x - self.origin.x - self.shear.x * p.z) / self.cell - 0.5
+        v = (p.y - self.origin.y - self.shear.y * p.z) / self.cell - 0.5
+        above = -p.z / self.dz - 1.0  # < 0 above the first plane
+        w = dr.maximum(above, 0.0)
+        inside = mi.Bool(active) & (w <= planes - 1.0) & (p.z <= BEAM_TOP)
+        window = inside & (u >= 0.0) & (v >= 0.0) & (u <= n - 1.0) & (v <= n - 1.0)
+        ju, iv, kw = dr.floor(u), dr.floor(v), dr.floor(w)
+        j0 = dr.minimum(mi.UInt32(dr.maximum(ju, 0.0)), n - 2)
+        i0 = dr.minimum(mi.UInt32(dr.maximum(iv, 0.0)), n - 2)
+        k0 = dr.minimum(mi.UInt32(dr.maximum(kw, 0.0)), planes - 2)
+        return inside, window, inside & ~window, (j0, i0, k0), (u - ju, v - iv, w - kw), above
+
+    def _plane_sums(self, where, dk: int, channels: int):
+        """The first ``channels`` (4 or :attr:`CHANNELS`) sums of plane k₀ + ``dk`` at the points :meth:`_locate`
+        found: bilinear between the cells' centres in the window, the plane's mean over it beyond."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        _, window, beyond, (j0, i0, k0), (fu, fv, _), _ = where
+        n, vectors = self.count, channels // 4
+        sums = [mi.Float(0.0) for _ in range(channels)]
+        for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
+                              (1, 1, fu * fv)):
+            index = 2 * (((k0 + dk) * n + i0 + di) * n + j0 + dj)
+            parts = [dr.gather(mi.Vector4f, self.packed, index + h, window) for h in range(vectors)]
+            for c in range(channels):
+                sums[c] += share * parts[c // 4][c % 4]
+        # beyond the window: the plane's mean over the window (caustics there are not resolved; the
+        # waves' mean redistribution of the beam is)
+        parts = [dr.gather(mi.Vector4f, self.profile, 2 * (k0 + dk) + h, beyond) for h in range(vectors)]
+        return [dr.select(beyond, parts[c // 4][c % 4], sums[c]) for c in range(channels)]
+
+    def lit(self, p, active):
+        """Points ``p`` at which :meth:`at` reads a beam (inside, E₀ > 0): where the tracer leaves the sun to it."""
+        where = self._locate(p, active)
+        fw = where[4][2]
+        e = (1 - fw) * self._plane_sums(where, 0, 4)[0] + fw * self._plane_sums(where, 1, 4)[0]
+        return where[0] & (e > 0.0)
+
     def at(self, p, active, jitter=None):
         """The beam at points ``p`` in the water, trilinear between the cells' centres and the planes
         (above the first plane: the first plane's E₀ and directions, its path shortened by the height over it;
@@ -464,39 +511,13 @@ class VolumeBeam(_BeamMap):
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        n, planes = self.count, self.planes
-        # the cells of plane k start at origin + z_k shear: the flat sea's beam line through p meets
-        # every plane at the same (u, v), so a shaft along the beam stays in its cells from plane to plane
-        u = (p.x - self.origin.x - self.shear.x * p.z) / self.cell - 0.5
-        v = (p.y - self.origin.y - self.shear.y * p.z) / self.cell - 0.5
-        above = -p.z / self.dz - 1.0  # < 0 above the first plane
-        w = dr.maximum(above, 0.0)
-        inside = mi.Bool(active) & (w <= planes - 1.0) & (p.z <= BEAM_TOP)
-        window = inside & (u >= 0.0) & (v >= 0.0) & (u <= n - 1.0) & (v <= n - 1.0)
-        beyond = inside & ~window
-        ju, iv, kw = dr.floor(u), dr.floor(v), dr.floor(w)
-        fu, fv, fw = u - ju, v - iv, w - kw
-        j0 = dr.minimum(mi.UInt32(dr.maximum(ju, 0.0)), n - 2)
-        i0 = dr.minimum(mi.UInt32(dr.maximum(iv, 0.0)), n - 2)
-        k0 = dr.minimum(mi.UInt32(dr.maximum(kw, 0.0)), planes - 2)
+        where = self._locate(p, active)
+        inside, fw, above = where[0], where[4][2], where[5]
         # per plane: bilinear sums, normalised to the rays' moments there; between the planes the moments
         # (not the sums: the path grows by dz/cos θ from plane to plane, no spread within a cell) linearly
         e, weight, moments = mi.Float(0.0), mi.Float(0.0), [mi.Float(0.0) for _ in range(self.CHANNELS - 1)]
         for dk, sk in ((0, 1 - fw), (1, fw)):
-            sums = [mi.Float(0.0) for _ in range(self.CHANNELS)]
-            for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
-                                  (1, 1, fu * fv)):
-                index = 2 * (((k0 + dk) * n + i0 + di) * n + j0 + dj)
-                first = dr.gather(mi.Vector4f, self.packed, index, window)
-                second = dr.gather(mi.Vector4f, self.packed, index + 1, window)
-                for c in range(self.CHANNELS):
-                    sums[c] += share * (first[c] if c < 4 else second[c - 4])
-            # beyond the window: the plane's mean over the window (caustics there are not resolved; the
-            # waves' mean redistribution of the beam is)
-            first = dr.gather(mi.Vector4f, self.profile, 2 * (k0 + dk), beyond)
-            second = dr.gather(mi.Vector4f, self.profile, 2 * (k0 + dk) + 1, beyond)
-            for c in range(self.CHANNELS):
-                sums[c] = dr.select(beyond, first[c] if c < 4 else second[c - 4], sums[c])
+            sums = self._plane_sums(where, dk, self.CHANNELS)
             e += sk * sums[0]
             lit = sums[0] > 0.0  # (a plane no ray reaches here has no moments: the other plane's)
             share_k = dr.select(lit, sk, 0.0)

@@ -424,7 +424,7 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
             # (only where the flight's vertex could scatter: the path's depth bounds its orders as before)
             L += volume.along(ray, dr.select(si.is_valid(), si.t, dr.inf), mei, phase, phase_ctx, W_f0,
                               sigma_t, sampler, in_water & (depth < max_depth), depth == 1)
-            in_volume = scatter & volume.at(mei.p, scatter)[4]
+            in_volume = scatter & volume.lit(mei.p, scatter)
         if sun_sampling:
             L += sun_strategy(mei, phase_f_pdf, W_s, sigma_t, sampler, scatter, in_volume)
         wo, phase_w, phase_pdf = phase.sample(phase_ctx, mei, sampler.next_1d(scatter), sampler.next_2d(scatter),
