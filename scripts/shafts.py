@@ -13,7 +13,7 @@ refracted sun's antisolar direction — the shafts' vanishing point in perspecti
 
 Usage: python scripts/shafts.py [--scene scenes/under_water.toml] [--cells 0,0.05] [--spp 64]
        [--size 320x180] [--frame 0] [--out docs/images/sunlight/shafts_under_water.png]
-       [--set section.key=value ...] [--converge]
+       [--set section.key=value ...] [--converge] [--key caustic_cell]
 """
 
 from __future__ import annotations
@@ -151,7 +151,8 @@ def parse_value(text: str):
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "under_water.toml"))
-    parser.add_argument("--cells", default="0,0.05", help="shaft_cell values [m], 0: off")
+    parser.add_argument("--cells", default="0,0.05", help="values of --key [m], 0: off")
+    parser.add_argument("--key", default="shaft_cell", help="the [render] key --cells sets (shaft_cell, caustic_cell)")
     parser.add_argument("--spp", type=int, default=64)
     parser.add_argument("--size", default="320x180")
     parser.add_argument("--frame", type=int, default=0)
@@ -163,7 +164,7 @@ def main() -> None:
 
     import imageio.v3 as iio
 
-    from oceanrender.pipeline import Sequence
+    from oceanrender.pipeline import Sequence, SequenceReport, simulate_coastal
     from oceanrender.runtime.variants import activate_variant
     from oceanrender.scene import load_scene, with_overrides
 
@@ -175,19 +176,23 @@ def main() -> None:
         extra.setdefault(section, {})[name] = parse_value(value)
     panels, frames = [], {}
     for cell in (float(c) for c in args.cells.split(",")):
-        render = {**extra.get("render", {}), "shaft_cell": cell}
+        render = {**extra.get("render", {}), args.key: cell}
         scene = with_overrides(load_scene(Path(args.scene)), "shafts.py",
                                **{**extra, "render": render,
                                   "output": {**extra.get("output", {}), "resolution": [width, height],
                                              "spp": args.spp}})
-        sequence = Sequence(scene, activate_variant(scene.render.variant).variant)
+        store = None
+        if scene.coastal is not None:  # the coast's simulation, run once (kept under outputs/shafts/)
+            store = simulate_coastal(scene, ROOT / "outputs" / "shafts" / Path(args.scene).stem, [args.frame],
+                                     SequenceReport("shafts.py"))
+        sequence = Sequence(scene, activate_variant(scene.render.variant).variant, coastal_store=store)
         tic = time.perf_counter()
         rendered = sequence.compute_frame(args.frame)
         seconds = time.perf_counter() - tic
         y = np.asarray(rendered.channels["Y"], float)
         frames[f"cell_{cell:g}"] = np.stack([rendered.channels[c] for c in "XYZ"], -1)
         panels.append(rendered.rgb8)
-        print(json.dumps({"shaft_cell": cell, "seconds": round(seconds, 1),
+        print(json.dumps({args.key: cell, "seconds": round(seconds, 1),
                           "render_seconds": round(rendered.seconds["render"], 1), "mean_Y": round(float(y.mean()), 4),
                           "speckle": round(speckle(y), 4)}), flush=True)
     if args.converge:

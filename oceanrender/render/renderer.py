@@ -197,6 +197,30 @@ def field_shaded_surface(geometry: FrameGeometry, ior: float, roughness: float, 
     return sea_surface(surface, shading)
 
 
+def surface_foam_weight(geometry: FrameGeometry, shading):
+    """The fresh-foam weight [-] of the water's surface at a hit ``(si, active)``, as its BSDF blends the opaque
+    foam (:func:`foamy_surface_bsdf`, :func:`field_shaded_surface`): the foam grid's (fields), or the vertices'
+    drawn as lace or as they are; None without foam. For light traced through the surface (the sun's maps)."""
+    if geometry.foam is None:
+        return None
+    if getattr(shading, "foam_layout", None) is not None:
+        return shading.foam_at
+    import mitsuba as mi  # noqa: PLC0415
+
+    from .sea_shading import lace_weight  # noqa: PLC0415
+
+    lace = geometry.foam_lace
+    tile = None if lace is None else mi.Float(np.ascontiguousarray(lace[0], np.float32).ravel())
+
+    def weight(si, active=True):
+        fresh = si.shape.eval_attribute_1(FOAM_ATTRIBUTE, si, active)
+        if lace is None:
+            return fresh
+        return lace_weight(fresh, si.p.x, si.p.y, tile, int(lace[0].shape[0]), float(lace[1]), active)
+
+    return weight
+
+
 #: Shapes a vertical ray from the camera passes before it gives up looking for the water's surface.
 MAX_SHAPES_ABOVE_CAMERA = 16
 
@@ -441,16 +465,25 @@ class WaterRenderer:
                        sun_settings=settings.sun)
         import drjit as dr  # noqa: PLC0415
 
-        # the sun's beam traced into maps: the split integrator's in-water tracer (JIT variants), fields shading
-        if shading is not None and sun_sampling and render.integrator == "split" and dr.is_jit_v(mi.Float):
-            from .sun_beam import SHAFT_PLANE_STEP, FloorCaustics, VolumeBeam  # noqa: PLC0415
+        # the sun's beam traced into maps: the split integrator's in-water tracer (JIT variants); the open sea's
+        # floor and volume from the sea's fields, a terrain's by casting rays through the body (fields or not)
+        if sun_sampling and render.integrator == "split" and dr.is_jit_v(mi.Float):
+            from .sun_beam import SHAFT_PLANE_STEP, FloorCaustics, TerrainCaustics, VolumeBeam  # noqa: PLC0415
 
-            floor = next((shape for shape in scene.shapes() if shape.id() == SEAFLOOR_ID), None)
-            if render.caustic_cell > 0 and floor is not None:
+            shapes = {shape.id(): shape for shape in scene.shapes()}
+            floor = shapes.get(SEAFLOOR_ID)
+            if render.caustic_cell > 0 and terrain is not None:
+                deepest = -float(np.min(terrain.positions[:, 2]))
+                renderer.floor_caustics = TerrainCaustics(
+                    scene, shapes[WATER_ID], [shapes[k] for k in (TERRAIN_ID, SEAFLOOR_ID) if k in shapes],
+                    render.caustic_cell, render.caustic_window, water_ior(settings),
+                    min(render.shaft_depth, deepest), foam=surface_foam_weight(geometry, shading),
+                    alpha=roughness)
+            elif render.caustic_cell > 0 and floor is not None and shading is not None:
                 renderer.floor_caustics = FloorCaustics(floor, -settings.water.depth + SEAFLOOR_LIFT_M,
                                                         render.caustic_cell, render.caustic_window,
                                                         water_ior(settings))
-            if render.shaft_cell > 0:
+            if render.shaft_cell > 0 and shading is not None:
                 renderer.volume_beam = VolumeBeam(render.shaft_cell, SHAFT_PLANE_STEP, render.caustic_window,
                                                   min(render.shaft_depth, settings.water.depth), water_ior(settings))
             for integrator in renderer.integrators():
@@ -547,16 +580,17 @@ class WaterRenderer:
     def update_caustics(self, geometry: FrameGeometry) -> None:
         """Trace the sun's beam onto the floor's map for a frame (after the shading fields and the sun are set)."""
         maps = [m for m in (self.floor_caustics, self.volume_beam) if m is not None]
-        if not maps or geometry.shading is None:
+        if not maps:
             return
         from .environment import SUN_WAVELENGTHS_NM, sun_normal_irradiance  # noqa: PLC0415
 
         # the meter's render and the frame's both load the same geometry: one map for both
         key = (tuple(np.asarray(self.camera_position, float)), self.sun_angles)
+        frame = geometry.shading if geometry.shading is not None else geometry  # (a coast without fields)
         last = self.caustics_for
-        if last is not None and last[0] is geometry.shading and last[1] == key:
+        if last is not None and last[0] is frame and last[1] == key:
             return
-        self.caustics_for = (geometry.shading, key)
+        self.caustics_for = (frame, key)
         sun = self.sun_settings
         if self.sun_angles is not None:
             sun = sun.model_copy(update={"elevation": self.sun_angles[0], "azimuth": self.sun_angles[1]})

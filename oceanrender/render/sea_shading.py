@@ -496,12 +496,13 @@ class SeaShading:
                              active)
         return dr.select(self.on_top(si), weight, 0.0)
 
-    def _area_at(self, si, active, parallax=False):
-        """(N of :meth:`area_normal` at the hit's footprint, shading spacing Δ [m], on_top) of a hit."""
+    def _area_at(self, si, active, parallax=False, spacing=None):
+        """(N of :meth:`area_normal` at the hit's footprint, shading spacing Δ [m], on_top) of a hit
+        (``spacing``: Δ [m] given instead of the camera's footprint, e.g. a light ray's spacing)."""
         import mitsuba as mi  # noqa: PLC0415
 
         top = mi.Bool(active) & self.on_top(si)
-        spacing = self.spacing(si)
+        spacing = self.spacing(si) if spacing is None else mi.Float(spacing)
         rest = mi.Point2f(si.uv.x, si.uv.y) + self.origin
         tau = self.join_at(si, top)[0] if self.join else None  # one attribute read for the whole hit
         if parallax:

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-__all__ = ["sun_rays", "splat_plane", "ray_window", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
+__all__ = ["sun_rays", "splat_plane", "splat_points", "TerrainCaustics", "view_centre", "ray_window", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
 
 
 def sun_rays(shading, sun, n_water: float, window: tuple[float, float, float], ray: float):
@@ -58,6 +58,10 @@ def sun_rays(shading, sun, n_water: float, window: tuple[float, float, float], r
     direction = mi.refract(mi.Vector3f(s), mi.Normal3f(normal), cos_t, eta_ti)
     lit &= direction.z < 0.0
     power = dr.select(lit, dr.dot(area, s) * (1.0 - reflectance) * (ray * ray), 0.0)
+    if getattr(shading, "foam_layout", None) is not None:  # the whitecaps' opaque foam lets nothing through
+        facet = dr.zeros(mi.SurfaceInteraction3f, count * count)
+        facet.uv, facet.n = mi.Point2f(rest.x, rest.y), mi.Normal3f(0.0, 0.0, 1.0)
+        power *= 1.0 - dr.clip(shading.foam_at(facet, lit), 0.0, 1.0)
     points = mi.Point3f(rest.x + ox + dx, rest.y + oy + dy, eta)
     return points, direction, power, lit
 
@@ -74,20 +78,53 @@ def splat_plane(points, direction, power, lit, z: float, origin: tuple[float, fl
     ny, nx = int(shape[0]), int(shape[1])
     path = (float(z) - points.z) / dr.minimum(direction.z, -1e-6)
     on = lit & (path >= 0.0)
-    u = (points.x + path * direction.x - float(origin[0])) / cell - 0.5
-    v = (points.y + path * direction.y - float(origin[1])) / cell - 0.5
-    ju, iv = dr.floor(u), dr.floor(v)
-    fu, fv = u - ju, v - iv
     if targets is None:
         targets = [dr.zeros(mi.Float, nx * ny) for _ in weights]
     values = [power if w is None else power * w(path) for w in weights]
+    return splat_points(points.x + path * direction.x, points.y + path * direction.y, on, values, origin, cell,
+                        shape, targets, offset)
+
+
+#: Fixed-point steps per the largest share of a launch in :func:`splat_points` (2⁴⁰: a cell may take 2²³ such
+#: shares before its 64-bit sum overflows; the shares are rounded to 2⁻⁴⁰ of the largest).
+FIXED_POINT_STEPS = float(2**40)
+
+
+def splat_points(x, y, on, values, origin: tuple[float, float], cell: float, shape: tuple[int, int], targets,
+                 offset: int = 0):
+    """Add ``values`` at points (x, y) [m] (lanes ``on``) to the cells of ``targets`` (rows along y, (ny, nx) =
+    ``shape`` from entry ``offset`` on, corner ``origin`` [m], side ``cell`` [m]) in bilinear shares between
+    the cells' centres; what lands outside is dropped.
+
+    The shares are summed in 64-bit fixed point (:data:`FIXED_POINT_STEPS` per the launch's largest share):
+    integer addition is associative, so the sums do not depend on the order in which the threads' atomic
+    adds land — the same map bit for bit in every run, process and machine (float atomics are not: a Dask
+    worker's frame differed from the single process's in the last bit). Each value's sums are then added
+    to its target once per cell.
+    """
+    import drjit as dr  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+
+    int64 = dr.int64_array_t(mi.Float)
+    float64 = dr.float64_array_t(mi.Float)
+    ny, nx = int(shape[0]), int(shape[1])
+    u = (x - float(origin[0])) / cell - 0.5
+    v = (y - float(origin[1])) / cell - 0.5
+    ju, iv = dr.floor(u), dr.floor(v)
+    fu, fv = u - ju, v - iv
+    values = [float64(dr.select(on, value, 0.0)) for value in values]
+    scales = [FIXED_POINT_STEPS / max(float(dr.max(dr.abs(value))[0]), 1e-30) for value in values]
+    sums = [dr.zeros(int64, nx * ny) for _ in values]
     for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
                           (1, 1, fu * fv)):
         jj, ii = mi.Int32(ju) + dj, mi.Int32(iv) + di
         inside = on & (jj >= 0) & (jj < nx) & (ii >= 0) & (ii < ny)
-        flat = mi.UInt32(dr.select(inside, ii * nx + jj, 0)) + int(offset)
-        for target, value in zip(targets, values):
-            dr.scatter_reduce(dr.ReduceOp.Add, target, value * share, flat, inside)
+        flat = mi.UInt32(dr.select(inside, ii * nx + jj, 0))
+        for total, value, scale in zip(sums, values, scales):
+            dr.scatter_reduce(dr.ReduceOp.Add, total, int64(dr.round(value * float64(share) * scale)), flat, inside)
+    cells = dr.arange(mi.UInt32, nx * ny) + int(offset)
+    for target, total, scale in zip(targets, sums, scales):
+        dr.scatter_reduce(dr.ReduceOp.Add, target, mi.Float(float64(total) / scale), cells)
     return targets
 
 
@@ -142,22 +179,85 @@ def window_margin(depth: float) -> float:
     return 0.35 * float(depth) + 1.0
 
 
-def ray_window(sun, n_water: float, centre, side: float, depths: tuple[float, float]):
+def ray_window(sun, n_water: float, centre, side: float, depths: tuple[float, float], margin: float | None = None):
     """(corner (x₀, y₀) [m] of a square map of ``side`` [m] centred on ``centre``, the rest window
     (x, y, side) [m] of the sun's rays that reach it on planes from ``depths[0]`` to ``depths[1]`` [m] down).
 
     The flat sea's refracted beam lands a horizontal distance d tan θ_t down-sun of where it left
-    the surface at depth d; the window covers that shift over the range of depths, plus
-    :func:`window_margin`.
+    the surface at depth d; the window covers that shift over the range of depths, plus ``margin`` [m]
+    (None: :func:`window_margin`).
     """
     sin_t = math.hypot(sun[0], sun[1]) / n_water
     horizontal = -np.asarray(sun[:2]) / max(math.hypot(sun[0], sun[1]), 1e-12) * sin_t
     shifts = [horizontal * d / math.sqrt(1.0 - sin_t * sin_t) for d in depths]
     lo, hi = np.minimum(*shifts), np.maximum(*shifts)
-    margin = window_margin(max(depths))
+    margin = window_margin(max(depths)) if margin is None else float(margin)
     x0 = float(centre[0]) - side / 2
     y0 = float(centre[1]) - side / 2
     return (x0, y0), (x0 - hi[0] - margin, y0 - hi[1] - margin, side + float(np.max(hi - lo)) + 2 * margin)
+
+
+#: Std [cells] of the Gaussian over which :func:`blur_by_path` takes the rays' mean path (depth varies slowly).
+PATH_SMOOTHING = 8.0
+
+#: Blur widths of the floor maps' roughness levels [cells] (:func:`blur_by_path`): a cell's blur is interpolated
+#: between the two levels around its own.
+BLUR_LEVELS = (0.0, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
+
+
+def shading_alpha(shading, spacing: float) -> float:
+    """Beckmann α [-] of the sea's fields at shading spacing ``spacing`` [m] (:meth:`SeaShading.alpha_at`, on the host)."""
+    table = np.asarray(shading.alpha, float)
+    u = (math.log(spacing) - shading.log_spacing_0) / shading.log_spacing_step
+    return float(np.interp(u, np.arange(table.size), table))
+
+
+def refraction_spread(alpha: float, sun, n_water: float) -> float:
+    """Std of the refracted direction [rad] through microfacets of Beckmann roughness ``alpha`` [-], sun ``sun``.
+
+    The microfacets' slopes have a variance α²/2 per axis (Beckmann: Walter et al. 2007, Eq. 33); tilting the
+    normal by δ turns the refracted ray, in the plane of incidence, by δ (1 − cos θ_i / (n cos θ_t))
+    (Snell's law differentiated; 1 − 1/n at normal incidence). Taken for both axes (isotropic, first order)."""
+    cos_i = float(np.clip(np.asarray(sun, float)[2] / np.linalg.norm(sun), 1e-6, 1.0))
+    sin_t = math.sqrt(1.0 - cos_i * cos_i) / n_water
+    cos_t = math.sqrt(1.0 - sin_t * sin_t)
+    return abs(1.0 - cos_i / (n_water * cos_t)) * float(alpha) / math.sqrt(2.0)
+
+
+def blur_by_path(power, path_power, count: int, cell: float, spread: float):
+    """The maps (power, power × path) [any units] of ``count``² cells of ``cell`` [m] blurred, each cell by a Gaussian
+    of std s̄ ``spread`` [m], s̄ = path_power / power its rays' mean path [m] in the water (device buffers in and out).
+
+    The rays carry the resolved waves' refraction; the waves finer than the rays' spacing (the surface's
+    roughness α there) turn each ray by a further ``spread`` [rad] (:func:`refraction_spread`), which over a
+    path s spreads its light over s·spread on the floor — what the path tracer's rough surface does to the
+    same light. Gaussian blurs at :data:`BLUR_LEVELS` (scipy.ndimage, energy-preserving, edges mirrored), and
+    per cell the linear interpolation between the two levels around its own width, from the mean path of the
+    rays within :data:`PATH_SMOOTHING` cells (a gather: on a floor of slowly varying depth every cell near a
+    point takes the point's width, so its power is kept).
+    """
+    import mitsuba as mi  # noqa: PLC0415
+    from scipy.ndimage import gaussian_filter  # noqa: PLC0415
+
+    if spread <= 0.0:
+        return power, path_power
+    e = np.asarray(power, np.float64).reshape(count, count)
+    es = np.asarray(path_power, np.float64).reshape(count, count)
+    # the paths' mean over PATH_SMOOTHING cells: defined where a cell's own rays are few or none (a shadow's edge)
+    near, near_path = (gaussian_filter(a, PATH_SMOOTHING, mode="mirror") for a in (e, es))
+    width = np.where(near > 0, near_path / np.maximum(near, 1e-30), 0.0) * spread / cell  # [cells]
+    levels = np.asarray(BLUR_LEVELS)
+    k = np.clip(np.searchsorted(levels, width) - 1, 0, len(levels) - 2)
+    f = np.clip((width - levels[k]) / (levels[k + 1] - levels[k]), 0.0, 1.0)
+    out_e, out_es = np.zeros_like(e), np.zeros_like(es)
+    for j, sigma in enumerate(levels):
+        share = np.where(k == j, 1.0 - f, 0.0) + np.where(k + 1 == j, f, 0.0)
+        if not share.any():
+            continue
+        blurred = [a if sigma == 0 else gaussian_filter(a, sigma, mode="mirror") for a in (e, es)]
+        out_e += share * blurred[0]
+        out_es += share * blurred[1]
+    return mi.Float(out_e.ravel().astype(np.float32)), mi.Float(out_es.ravel().astype(np.float32))
 
 
 class _BeamMap:
@@ -213,10 +313,14 @@ class FloorCaustics(_BeamMap):
     """
 
     def __init__(self, floor_shape, floor_z: float, cell: float, side: float, n_water: float):
+        self.floor, self.z, self.cell, self.n_water = floor_shape, float(floor_z), float(cell), float(n_water)
+        self._empty_map(side)
+
+    def _empty_map(self, side: float) -> None:
+        """A dark square map of ``side`` [m] in cells of :attr:`cell`, and no sun yet."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        self.floor, self.z, self.cell, self.n_water = floor_shape, float(floor_z), float(cell), float(n_water)
         self.count = int(round(float(side) / self.cell))
         self.side = self.count * self.cell
         self.irradiance = dr.zeros(mi.Float, self.count * self.count)
@@ -234,9 +338,12 @@ class FloorCaustics(_BeamMap):
         sun = np.asarray(sun, float) / np.linalg.norm(sun)
         depth = max(-self.z, 0.0)
         (x0, y0), window = ray_window(sun, self.n_water, centre, self.side, (depth, depth))
-        rays = sun_rays(shading, sun, self.n_water, window, self.cell / RAYS_PER_CELL)
+        h = self.cell / RAYS_PER_CELL
+        rays = sun_rays(shading, sun, self.n_water, window, h)
         power, path_power = splat_plane(*rays, self.z, (x0, y0), self.cell, (self.count, self.count),
                                         weights=(None, lambda s: s))
+        power, path_power = blur_by_path(power, path_power, self.count, self.cell,
+                                         refraction_spread(shading_alpha(shading, h), sun, self.n_water))
         area = self.cell * self.cell
         self.irradiance, self.path_irradiance = power / area, path_power / area
         self.origin = mi.Point2f(x0, y0)
@@ -272,6 +379,184 @@ class FloorCaustics(_BeamMap):
             es += share * dr.gather(mi.Float, self.path_irradiance, index, inside)
         path = dr.select(e > 0.0, es / dr.maximum(e, 1e-30), 0.0)
         return e, path, inside
+
+
+#: Rays of the terrain's map traced per kernel launch [-] (memory: ~30 floats per ray).
+TERRAIN_BATCH = 1 << 22
+
+#: Vertical rays per side of the terrain's map that find its deepest floor (:meth:`TerrainCaustics.deepest_under`),
+#: and the shapes (water, objects) each may pass on its way down.
+DEPTH_PROBE = 32
+MAX_SHAPES_ABOVE_FLOOR = 4
+
+#: Camera rays per image side (columns, rows) that find where the terrain's map is centred (:func:`view_centre`).
+VIEW_PROBE = (48, 27)
+
+
+def view_centre(scene, water, side: float, fallback):
+    """(x, y) [m]: the median of where the camera's rays meet the water's upper surface within ``side`` [m] of
+    the camera — the water in view that the maps can cover (``fallback`` where none does). ``water``: the
+    water body's shape; the camera is the scene's first sensor (a :data:`VIEW_PROBE` grid of its rays)."""
+    import drjit as dr  # noqa: PLC0415
+    import mitsuba as mi  # noqa: PLC0415
+
+    from .sea_shading import TOP_NORMAL_Z  # noqa: PLC0415
+
+    nx, ny = VIEW_PROBE
+    index = dr.arange(mi.UInt32, nx * ny)
+    film = mi.Point2f((mi.Float(index % nx) + 0.5) / nx, (mi.Float(index // nx) + 0.5) / ny)
+    ray, _ = scene.sensors()[0].sample_ray(0.0, 0.5, film, mi.Point2f(0.5, 0.5))
+    si = scene.ray_intersect(ray)
+    seen = si.is_valid() & (si.shape == mi.ShapePtr(water)) & (si.n.z > TOP_NORMAL_Z) & (si.t <= float(side))
+    seen = np.asarray(seen, bool)
+    if not seen.any():
+        return tuple(float(c) for c in fallback[:2])
+    return float(np.median(np.asarray(si.p.x)[seen])), float(np.median(np.asarray(si.p.y)[seen]))
+
+
+class TerrainCaustics(FloorCaustics):
+    """The sun's beam on ground under the water (the coast's sand and rocks), traced per frame by casting rays.
+
+    The coast's floor is no plane, and its water no sea of fields everywhere: the sun's rays (spacing
+    h = ``cell`` / :data:`RAYS_PER_CELL` on a horizontal grid) are cast against the frame's own scene —
+    the water body's mesh, the terrain, the objects (whose shadows they keep) — with Mitsuba's ray
+    tracing. At a ray's first hit on the water's upper surface the normal is the one the camera's hits
+    are shaded with, at spacing h: the sea's fields (joined with the body's own surface where it is a
+    coast inside the sea, :meth:`SeaShading._area_at`) with the visible-area weight
+    w = max(0, ŝ·N) / ŝ·N_g of the fields' facet over the mesh's (as
+    :meth:`SeaShading.shading_frame`), or the mesh's interpolated normal where the body has no fields
+    (w then Veach's adjoint correction for shading normals). The ray carries the flux E_n h² ŝ_z through
+    its horizontal cell (E_n = 1), times w, the unpolarised Fresnel transmittance 1 − F and 1 − the
+    foam's weight (opaque white water); refracted (Snell) it is traced on, and where it meets
+    the floor's shapes first its power, and its power times the length of its path in the water,
+    are added in bilinear shares to the map's cells at the landing point's (x, y). The map holds flux
+    per horizontal area P/A_h; the tracer's f_r (Mitsuba's ``eval``: the BRDF times the cosine towards
+    the zenith, n_z on sloping ground) turns it into ρ/π times the ground's irradiance (P/A_h) n_z.
+
+    The map (side ``side`` [m]) is centred on the water in view (:func:`view_centre`); its rays start
+    above the scene's highest point, up-sun of the map by the flat sea's beam over the deepest ground
+    under it (:meth:`deepest_under`, at most ``depth`` [m]) plus :func:`window_margin`; the roughness
+    the rays do not resolve blurs it (:func:`blur_by_path`; ``alpha`` where there are no fields).
+    """
+
+    def __init__(self, scene, water, floors, cell: float, side: float, n_water: float, depth: float,
+                 margin: float | None = None, foam=None, alpha: float = 0.0):
+        self.scene, self.water, self.floors = scene, water, tuple(floors)
+        self.cell, self.n_water, self.depth = float(cell), float(n_water), max(float(depth), 0.0)
+        #: how far beyond the flat sea's beam the rays leave the surface [m] (None: :func:`window_margin`)
+        self.margin = margin
+        #: the surface's fresh-foam weight at a hit, ``(si, active) -> Float`` [-] (None: no foam): the foam is an
+        #: opaque layer on that fraction of the surface (:func:`~.renderer.foamy_surface_bsdf`), no light passes it
+        self.foam = foam
+        #: Beckmann α [-] of the surface where it has no fields (its mesh's roughness): the maps' blur
+        self.alpha = float(alpha)
+        self._empty_map(side)
+
+    def on_floor(self, si):
+        """Hits on the floor's shapes (the terrain, and the sea's floor beyond it)."""
+        import mitsuba as mi  # noqa: PLC0415
+
+        found = mi.Bool(False)
+        for shape in self.floors:
+            found |= si.shape == mi.ShapePtr(shape)
+        return found
+
+    def update(self, shading, sun, sun_spectrum, wavelengths, centre) -> None:
+        """Trace the frame's beam (as :meth:`FloorCaustics.update`; ``shading``: the sea's fields, or None where
+        the body has none), the map centred on the water in view (``centre``: where there is none)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        sun = np.asarray(sun, float) / np.linalg.norm(sun)
+        if sun[2] <= 1e-6:
+            return
+        centre = view_centre(self.scene, self.water, self.side, centre)
+        depth = self.deepest_under(centre)
+        (x0, y0), (wx, wy, wside) = ray_window(sun, self.n_water, centre, self.side, (0.0, depth), self.margin)
+        top = float(self.scene.bbox().max.z) + 1.0
+        lift = top / sun[2]  # from the still level up along the sun's direction to the start plane
+        h = self.cell / RAYS_PER_CELL
+        count = int(np.ceil(wside / h))
+        rows = max(1, TERRAIN_BATCH // count)
+        area = self.cell * self.cell
+        shape = (self.count, self.count)
+        targets = [dr.zeros(mi.Float, self.count * self.count) for _ in range(2)]
+        for first in range(0, count, rows):
+            n_rows = min(rows, count - first)
+            index = dr.arange(mi.UInt32, n_rows * count)
+            i, j = index // count + first, index % count
+            start = mi.Point3f(wx + (mi.Float(j) + 0.5) * h + lift * sun[0],
+                               wy + (mi.Float(i) + 0.5) * h + lift * sun[1], top)
+            power, landing, path, on = self._trace(shading, sun, start, h)
+            splat_points(landing.x, landing.y, on, [power, power * path], (x0, y0), self.cell, shape, targets)
+            dr.eval(*targets)
+        alpha = self.alpha if shading is None else shading_alpha(shading, h)
+        targets = blur_by_path(*targets, self.count, self.cell, refraction_spread(alpha, sun, self.n_water))
+        self.irradiance, self.path_irradiance = targets[0] / area, targets[1] / area
+        self.origin = mi.Point2f(x0, y0)
+        dr.make_opaque(self.irradiance, self.path_irradiance, self.origin)
+        self.set_sun(sun, sun_spectrum, wavelengths)
+
+    def deepest_under(self, centre) -> float:
+        """The deepest floor [m below z = 0] under the map centred on ``centre`` (x, y) [m], at most
+        :attr:`depth`: vertical rays on a :data:`DEPTH_PROBE`² grid over it (the rays' window follows it)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        n = DEPTH_PROBE
+        index = dr.arange(mi.UInt32, n * n)
+        x = float(centre[0]) + (mi.Float(index % n) + 0.5) / n * self.side - self.side / 2
+        y = float(centre[1]) + (mi.Float(index // n) + 0.5) / n * self.side - self.side / 2
+        top = float(self.scene.bbox().max.z) + 1.0
+        si = self.scene.ray_intersect(mi.Ray3f(mi.Point3f(x, y, top), mi.Vector3f(0.0, 0.0, -1.0)))
+        # (through the water and the objects: only the floor's shapes count)
+        z = np.asarray(dr.select(si.is_valid() & self.on_floor(si), si.p.z, 0.0), float)
+        for _ in range(MAX_SHAPES_ABOVE_FLOOR):
+            missed = si.is_valid() & ~self.on_floor(si)
+            if not np.asarray(missed).any():
+                break
+            si = self.scene.ray_intersect(si.spawn_ray(mi.Vector3f(0.0, 0.0, -1.0)), missed)
+            z = np.where(np.asarray(missed & si.is_valid() & self.on_floor(si)), np.asarray(si.p.z, float), z)
+        return float(np.clip(-z.min(), 0.0, self.depth))
+
+    def _trace(self, shading, sun, start, h: float):
+        """(power [W per W m⁻² of the sun's normal irradiance], landing point [m], path in the water [m], landed)
+        of the sun's rays from ``start`` [m] (spacing ``h`` [m]) through the water onto the floor."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        from .sea_shading import MAX_AREA_WEIGHT, TOP_NORMAL_Z  # noqa: PLC0415
+
+        s = mi.Vector3f(*(float(c) for c in sun))
+        si = self.scene.ray_intersect(mi.Ray3f(start, -s))
+        on = si.is_valid() & (si.shape == mi.ShapePtr(self.water)) & (si.n.z > TOP_NORMAL_Z)
+        weight = mi.Float(1.0)
+        normal = mi.Vector3f(si.sh_frame.n)
+        if shading is not None:
+            area, _, top = shading._area_at(si, on, spacing=h)
+            mesh = dr.dot(s, dr.cross(si.dp_du, si.dp_dv))
+            weight = dr.select(top, dr.minimum(dr.maximum(dr.dot(s, area), 0.0) / dr.maximum(dr.abs(mesh), 1e-12),
+                                               MAX_AREA_WEIGHT), 1.0)
+            normal = dr.select(top, dr.normalize(area), normal)
+        cos_i = dr.dot(normal, s)
+        on &= cos_i > 0.0
+        reflectance, cos_t, _, eta_ti = mi.fresnel(dr.maximum(cos_i, 1e-6), mi.Float(self.n_water))
+        direction = mi.refract(s, mi.Normal3f(normal), cos_t, eta_ti)
+        on &= direction.z < 0.0
+        if shading is None:
+            # the mesh's interpolated normal shades a flat triangle: the adjoint of the path tracer's
+            # transmission (Veach 1997, Eq. 5.19), |s·n_s| |d·n_g| / (|s·n_g| |d·n_s|), so that the flux the
+            # triangle intercepts (s·n_g) is spread as the camera's paths see it through n_s
+            geometric = mi.Vector3f(si.n)
+            weight = (cos_i * dr.abs(dr.dot(direction, geometric))
+                      / dr.maximum(dr.abs(dr.dot(s, geometric)) * dr.abs(cos_t), 1e-12))
+        below = si.spawn_ray(direction)
+        floor = self.scene.ray_intersect(below, on)
+        on &= floor.is_valid() & self.on_floor(floor)
+        if self.foam is not None:  # the opaque foam's share of the surface lets nothing through
+            weight *= 1.0 - dr.clip(self.foam(si, on), 0.0, 1.0)
+        power = dr.select(on, (h * h * float(sun[2])) * weight * (1.0 - reflectance), 0.0)
+        return power, floor.p, floor.t, on
 
 
 #: Spacing of the volume's planes [m].

@@ -436,11 +436,12 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         opaque_in_water = surface & in_water & ~water_bsdf
         at_floor = mi.Bool(False)
         if floor is not None:
-            # The sun's beam on the floor from the map (E₀ per W m⁻² of the sun, its mean path s̄):
-            # f_r E₀ E_n(λ) exp(−σ_t s̄), f_r the floor's BRDF (Lambertian: its value towards the zenith).
+            # The sun's beam on the floor from the map (E₀ per W m⁻² of the sun per horizontal area, its mean
+            # path s̄): f_r E₀ E_n(λ) exp(−σ_t s̄), f_r the floor's BRDF (Lambertian) times the cosine of the
+            # zenith there (Mitsuba's eval), n_z: the irradiance on sloping ground is E₀ n_z.
             e0, path, inside = floor.at(si.p, opaque_in_water)
             at_floor = opaque_in_water & floor.on_floor(si) & inside
-            f_r = bsdf_ptr.eval(ctx, si, mi.Vector3f(0.0, 0.0, 1.0), at_floor)
+            f_r = bsdf_ptr.eval(ctx, si, si.to_local(mi.Vector3f(0.0, 0.0, 1.0)), at_floor)
             beam = e0 * floor.sun_irradiance(si.wavelengths, at_floor) * dr.exp(-sigma_t * path)
             L += dr.select(at_floor, W * f_r * beam, 0.0)
 

@@ -985,6 +985,13 @@ class Scene(_Section):
         return self
 
     @model_validator(mode="after")
+    def _shafts_in_the_open_sea(self) -> "Scene":
+        if self.coastal is not None and self.render.shaft_cell > 0:
+            raise ValueError(f"[render] shaft_cell: the volume's beam is traced from the open sea's fields alone; "
+                             f"a [coastal] scene cannot use it: expected 0, got {self.render.shaft_cell:g}")
+        return self
+
+    @model_validator(mode="after")
     def _coast_in_open_sea(self) -> "Scene":
         coastal = self.coastal
         if coastal is None or coastal.waves != "open sea":

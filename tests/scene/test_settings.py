@@ -87,6 +87,10 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[ocean]\nspectrum = 'Pierson-Moskowitz 1964'\nfetch = 1e4\n", "fetch: 'Pierson-Moskowitz 1964' has no fetch"),
         ("[ocean]\nsurface_tension = 0.5\n", "[ocean] surface_tension: Input should be less than or equal to 0.1"),
         ("[ocean]\nmodel = 'Gerstner'\nsurface_tension = 0.07\n", "surface_tension is applied by model 'FFT' only"),
+        # Issue 41: the volume's beam is the open sea's alone.
+        ("[render]\nshaft_cell = 0.05\n[coastal]\nsize = [10.0, 10.0]\ncells = [20, 20]\n",
+         "[render] shaft_cell: the volume's beam is traced from the open sea's fields alone; a [coastal] scene "
+         "cannot use it: expected 0, got 0.05"),
     ],
 )
 def test_errors_are_one_line_with_file_and_key(tmp_path, text, expected):
