@@ -45,6 +45,23 @@ class CoastalBody:
         self.finest_cell = float(min(self.coastal.spacing))
         self.vertex_count = int(self.faces.max()) + 1
         self._whitewater: dict[int, np.ndarray] = {}  # white-water coverage of stored frames (kept for the next)
+        #: the wind sea finer than the cells, as the surface's shading fields (:mod:`.coast_ripples`), or None
+        self.ripples = None
+        if self.shades_from_fields:
+            from .coast_ripples import CoastRipples  # noqa: PLC0415
+
+            size = np.asarray(self.coastal.shape[::-1], float) * np.asarray(self.coastal.spacing, float)
+            ripples = CoastRipples(scene, self.finest_cell, tuple(np.asarray(self.coastal.origin) + size / 2))
+            if ripples.resolves_any:  # (an [ocean] whose cascades stop short of the band: its roughness alone)
+                self.ripples = ripples
+
+    @property
+    def shades_from_fields(self) -> bool:
+        """Whether the surface is shaded from the wind sea's fields finer than the cells (:mod:`.coast_ripples`):
+        ``[render] surface_shading = "fields"``, an FFT ``[ocean]`` and ``[water] surface_roughness = "auto"``."""
+        scene = self.scene
+        return (scene.render.surface_shading == "fields" and scene.ocean.model == "FFT"
+                and scene.water.surface_roughness == "auto")
 
     def frame_fields(self, t: float) -> dict[str, np.ndarray]:
         """The stored fields of the frame at scene time t [s]."""
@@ -101,7 +118,11 @@ class CoastalBody:
                                                  self.coastal.h_min)
         positions, normals = self.rotated(positions, normals)
         foam = self.vertex_foam(t, len(positions))[1] if self.scene.foam.enabled else None
-        return FrameGeometry(positions, normals, foam, foam_lace=scene_foam_lace(self.scene))
+        shading = None
+        if self.ripples is not None:
+            wet = (fields["h"] > self.coastal.h_min).ravel()
+            shading = self.ripples.fields(t, positions, wet.size, (self.coastal.still_level - self.bed).ravel(), wet)
+        return FrameGeometry(positions, normals, foam, shading=shading, foam_lace=scene_foam_lace(self.scene))
 
     def rotated(self, positions: np.ndarray, normals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Positions and normals turned by ``[coastal] rotation`` about ``origin`` (world = origin + R (p − origin))."""

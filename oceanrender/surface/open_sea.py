@@ -128,6 +128,22 @@ def polar_grid_sample(grid: RadialGrid, values: NDArray, x: NDArray, y: NDArray,
     return np.where(r > grid.outer_radius * (1 + 1e-6), outside, value)  # (the last ring itself inside)
 
 
+def shading_cascades(sea, t: float) -> tuple[ShadingCascade, ...]:
+    """The level pyramids of ``sea``'s cascades (a :class:`~oceanrender.waves.sea.SeaSurface`) at t [s], every
+    level's :data:`~.frame.SHADING_NAMES` at its own nodes (float32), as the renderer shades from them."""
+    cascades = []
+    for levels in sea.levels:
+        stacks = []
+        for ocean in levels.oceans[:-1]:
+            f = ocean.fields(float(t))
+            stack = np.empty((*f.height.shape, len(SHADING_NAMES)), np.float32)  # filled per channel: no float64 copy
+            for k, name in enumerate(SHADING_NAMES):
+                stack[..., k] = sampled_field(f, name)
+            stacks.append(stack)
+        cascades.append(ShadingCascade(float(levels.grid.patch_size), float(levels.band_top), tuple(stacks)))
+    return tuple(cascades)
+
+
 class WaterBody:
     """Builds the frames of a scene's water body; the triangles never change."""
 
@@ -477,18 +493,8 @@ class WaterBody:
         (:class:`~oceanrender.waves.lod.CascadeLevels`), so the shading carries the
         geometry's waves with their phases.
         """
-        cascades = []
-        for levels in self.sea.levels:
-            stacks = []
-            for ocean in levels.oceans[:-1]:
-                f = ocean.fields(float(t))
-                stack = np.empty((*f.height.shape, len(SHADING_NAMES)), np.float32)  # filled per channel: no float64 copy
-                for k, name in enumerate(SHADING_NAMES):
-                    stack[..., k] = sampled_field(f, name)
-                stacks.append(stack)
-            cascades.append(ShadingCascade(float(levels.grid.patch_size), float(levels.band_top), tuple(stacks)))
         coords, origin = self.texcoords(t, vertex_count)
-        return ShadingFields(tuple(cascades), SHADING_SPACINGS, self.shading_alpha, origin, coords,
+        return ShadingFields(shading_cascades(self.sea, t), SHADING_SPACINGS, self.shading_alpha, origin, coords,
                              self.foam_field(t, origin))
 
     def foam_field(self, t: float, origin: tuple[float, float]) -> FoamField | None:

@@ -216,9 +216,10 @@ class SeaSurface:
     spectrum's slope budget.
     """
 
-    def __init__(self, ocean: OceanSettings, disturbances=()):
+    def __init__(self, ocean: OceanSettings, disturbances=(), spectrum=None):
         self.settings = ocean
-        self.spectrum = directional_spectrum(ocean)
+        #: Ψ(kx, ky) [m⁴]: the scene's (:func:`directional_spectrum`), or ``spectrum`` (e.g. a band of it)
+        self.spectrum = directional_spectrum(ocean) if spectrum is None else spectrum
         self._query_stacks: tuple[tuple, dict] | None = None  # level stacks of the last (t, spacing) queried
         #: Disturbances added to the sea (ship wakes): objects with ``sample(x, y, t) -> (η, ∂η/∂x, ∂η/∂y)``.
         self.disturbances: tuple = tuple(disturbances)
