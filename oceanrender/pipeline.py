@@ -249,7 +249,9 @@ class Sequence:
         if frame not in self._meters:
             geometry = self.geometry(frame)
             self.point(frame)
-            self.renderer.update_water(geometry)
+            # (the floor's map left out: the quick render's mean is the path tracer's alone, and a frame of the
+            # window is not traced for a map it would use once; the frame's own render traces it)
+            self.renderer.update_water(geometry, floor_map=False)
             xyz, _ = self.renderer.render_xyz(METER_SPP, seed=self.scene.render.seed + frame + METER_SEED_OFFSET)
             self._meters[frame] = adaptation_luminance_log_average(block_mean(xyz[..., 1], METER_BLOCK))
             self._loaded = (frame, geometry)

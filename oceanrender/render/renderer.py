@@ -569,17 +569,24 @@ class WaterRenderer:
             update_object_positions(self.params, geometry.name, geometry.positions)
         self.params.update()
 
-    def update_water(self, geometry: FrameGeometry) -> None:
+    def update_water(self, geometry: FrameGeometry, floor_map: bool = True) -> None:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place (and the sea's
-        shading fields)."""
+        shading fields). ``floor_map`` False: the floor's map is left out of the next renders (the path
+        tracer lights the floor alone, unbiased: the meter's quick renders of other frames need no map)."""
         update_water_parameters(self.params, geometry)
         if self.shading is not None and geometry.shading is not None:
             self.shading.update(geometry.shading)
-        self.update_caustics(geometry)
+        if not floor_map and self.floor_caustics is not None:
+            self.floor_caustics.leave_out()
+            self.caustics_for = None
+            if self.volume_beam is None:
+                return
+        self.update_caustics(geometry, floor_map)
 
-    def update_caustics(self, geometry: FrameGeometry) -> None:
-        """Trace the sun's beam onto the floor's map for a frame (after the shading fields and the sun are set)."""
-        maps = [m for m in (self.floor_caustics, self.volume_beam) if m is not None]
+    def update_caustics(self, geometry: FrameGeometry, floor_map: bool = True) -> None:
+        """Trace the sun's beam onto the floor's map (unless not ``floor_map``) and the volume's planes for a frame
+        (after the shading fields and the sun are set)."""
+        maps = [m for m in (self.floor_caustics if floor_map else None, self.volume_beam) if m is not None]
         if not maps:
             return
         from .environment import SUN_WAVELENGTHS_NM, sun_normal_irradiance  # noqa: PLC0415
@@ -590,7 +597,7 @@ class WaterRenderer:
         last = self.caustics_for
         if last is not None and last[0] is frame and last[1] == key:
             return
-        self.caustics_for = (frame, key)
+        self.caustics_for = (frame, key) if floor_map else None
         sun = self.sun_settings
         if self.sun_angles is not None:
             sun = sun.model_copy(update={"elevation": self.sun_angles[0], "azimuth": self.sun_angles[1]})

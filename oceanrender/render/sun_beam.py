@@ -108,12 +108,17 @@ def splat_points(x, y, on, values, origin: tuple[float, float], cell: float, sha
     int64 = dr.int64_array_t(mi.Float)
     float64 = dr.float64_array_t(mi.Float)
     ny, nx = int(shape[0]), int(shape[1])
-    u = (x - float(origin[0])) / cell - 0.5
-    v = (y - float(origin[1])) / cell - 0.5
+    # (per-launch numbers as opaque values, not literals: one compiled kernel for every frame and launch)
+    corner = mi.Point2f(float(origin[0]), float(origin[1]))
+    dr.make_opaque(corner)
+    u = (x - corner.x) / cell - 0.5
+    v = (y - corner.y) / cell - 0.5
     ju, iv = dr.floor(u), dr.floor(v)
     fu, fv = u - ju, v - iv
     values = [float64(dr.select(on, value, 0.0)) for value in values]
-    scales = [FIXED_POINT_STEPS / max(float(dr.max(dr.abs(value))[0]), 1e-30) for value in values]
+    dr.eval(u, v, on, *values)  # (the rays traced once, in one kernel, before their largest share is found)
+    scales = [float64(FIXED_POINT_STEPS / max(float(dr.max(dr.abs(value))[0]), 1e-30)) for value in values]
+    dr.make_opaque(*scales)
     sums = [dr.zeros(int64, nx * ny) for _ in values]
     for dj, di, share in ((0, 0, (1 - fu) * (1 - fv)), (1, 0, fu * (1 - fv)), (0, 1, (1 - fu) * fv),
                           (1, 1, fu * fv)):
@@ -350,6 +355,15 @@ class FloorCaustics(_BeamMap):
         dr.make_opaque(self.irradiance, self.path_irradiance, self.origin)
         self.set_sun(sun, sun_spectrum, wavelengths)
 
+    def leave_out(self) -> None:
+        """Move the map out of every floor's reach until the next :meth:`update` (an opaque origin: no new
+        kernel): the path tracer lights the floor alone."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
+        self.origin = mi.Point2f(BEYOND_WINDOW, BEYOND_WINDOW)
+        dr.make_opaque(self.origin)
+
     # ---- traced into the render kernel
 
     def on_floor(self, si):
@@ -481,13 +495,16 @@ class TerrainCaustics(FloorCaustics):
         area = self.cell * self.cell
         shape = (self.count, self.count)
         targets = [dr.zeros(mi.Float, self.count * self.count) for _ in range(2)]
+        # (the frame's numbers as opaque values, not literals: one compiled kernel for every frame and launch)
+        corner = mi.Point3f(float(wx + lift * sun[0]), float(wy + lift * sun[1]), float(top))
+        rays = mi.Vector3f(*(float(c) for c in sun))
+        dr.make_opaque(corner, rays)
         for first in range(0, count, rows):
             n_rows = min(rows, count - first)
             index = dr.arange(mi.UInt32, n_rows * count)
             i, j = index // count + first, index % count
-            start = mi.Point3f(wx + (mi.Float(j) + 0.5) * h + lift * sun[0],
-                               wy + (mi.Float(i) + 0.5) * h + lift * sun[1], top)
-            power, landing, path, on = self._trace(shading, sun, start, h)
+            start = mi.Point3f(corner.x + (mi.Float(j) + 0.5) * h, corner.y + (mi.Float(i) + 0.5) * h, corner.z)
+            power, landing, path, on = self._trace(shading, rays, start, h)
             splat_points(landing.x, landing.y, on, [power, power * path], (x0, y0), self.cell, shape, targets)
             dr.eval(*targets)
         alpha = self.alpha if shading is None else shading_alpha(shading, h)
@@ -505,10 +522,12 @@ class TerrainCaustics(FloorCaustics):
 
         n = DEPTH_PROBE
         index = dr.arange(mi.UInt32, n * n)
-        x = float(centre[0]) + (mi.Float(index % n) + 0.5) / n * self.side - self.side / 2
-        y = float(centre[1]) + (mi.Float(index // n) + 0.5) / n * self.side - self.side / 2
-        top = float(self.scene.bbox().max.z) + 1.0
-        si = self.scene.ray_intersect(mi.Ray3f(mi.Point3f(x, y, top), mi.Vector3f(0.0, 0.0, -1.0)))
+        corner = mi.Point3f(float(centre[0]) - self.side / 2, float(centre[1]) - self.side / 2,
+                            float(self.scene.bbox().max.z) + 1.0)
+        dr.make_opaque(corner)
+        x = corner.x + (mi.Float(index % n) + 0.5) / n * self.side
+        y = corner.y + (mi.Float(index // n) + 0.5) / n * self.side
+        si = self.scene.ray_intersect(mi.Ray3f(mi.Point3f(x, y, corner.z), mi.Vector3f(0.0, 0.0, -1.0)))
         # (through the water and the objects: only the floor's shapes count)
         z = np.asarray(dr.select(si.is_valid() & self.on_floor(si), si.p.z, 0.0), float)
         for _ in range(MAX_SHAPES_ABOVE_FLOOR):
@@ -521,13 +540,14 @@ class TerrainCaustics(FloorCaustics):
 
     def _trace(self, shading, sun, start, h: float):
         """(power [W per W m⁻² of the sun's normal irradiance], landing point [m], path in the water [m], landed)
-        of the sun's rays from ``start`` [m] (spacing ``h`` [m]) through the water onto the floor."""
+        of the sun's rays from ``start`` [m] (spacing ``h`` [m]) through the water onto the floor; ``sun`` the
+        unit vector towards it (a Vector3f)."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
         from .sea_shading import MAX_AREA_WEIGHT, TOP_NORMAL_Z  # noqa: PLC0415
 
-        s = mi.Vector3f(*(float(c) for c in sun))
+        s = sun  # (an opaque Vector3f, unit, towards the sun)
         si = self.scene.ray_intersect(mi.Ray3f(start, -s))
         on = si.is_valid() & (si.shape == mi.ShapePtr(self.water)) & (si.n.z > TOP_NORMAL_Z)
         weight = mi.Float(1.0)
@@ -555,7 +575,7 @@ class TerrainCaustics(FloorCaustics):
         on &= floor.is_valid() & self.on_floor(floor)
         if self.foam is not None:  # the opaque foam's share of the surface lets nothing through
             weight *= 1.0 - dr.clip(self.foam(si, on), 0.0, 1.0)
-        power = dr.select(on, (h * h * float(sun[2])) * weight * (1.0 - reflectance), 0.0)
+        power = dr.select(on, (h * h) * s.z * weight * (1.0 - reflectance), 0.0)
         return power, floor.p, floor.t, on
 
 
@@ -646,6 +666,7 @@ class VolumeBeam(_BeamMap):
         window = (x0 - margin, y0 - margin, self.side + 2 * margin)
         points, direction, power, lit = sun_rays(shading, sun, self.n_water, window,
                                                  self.cell / VOLUME_RAYS_PER_CELL)
+        dr.eval(points, direction, power, lit)  # (traced once for all the planes)
         inverse = 1.0 / dr.maximum(-direction.z, 1e-6)
         weights = (lambda s: inverse, lambda s: s * inverse, lambda s: direction.x * inverse,
                    lambda s: direction.y * inverse, lambda s: s * s * inverse,

@@ -383,3 +383,19 @@ def test_the_roughness_blur_spreads_a_point_by_its_path_and_keeps_its_power(vari
     j, i = np.mgrid[:count, :count] - 50
     assert (e * (i * i + j * j)).sum() == pytest.approx(2 * 2.0**2, rel=0.01)
     np.testing.assert_allclose(np.asarray(es, float).reshape(count, count)[50, 50], 2.0 * e[50, 50], rtol=1e-6)
+
+
+def test_the_meter_s_quick_renders_leave_the_floor_s_map_out(variant):
+    # The meter renders other frames of its window at 2 spp for their mean: the path tracer alone does that
+    # unbiased, so their map is not traced (on the coast a map costs seconds); the frame's own render traces it.
+    from oceanrender.pipeline import Sequence
+    from oceanrender.render.sun_beam import BEYOND_WINDOW
+
+    sequence = Sequence(floor_scene(0.02), variant)
+    beam = sequence.renderer.floor_caustics
+    sequence.meter(1)
+    assert np.asarray(beam.origin, float).min() >= BEYOND_WINDOW  # out of every floor's reach
+    sequence.compute_frame(0)
+    corner = np.asarray(beam.origin, float).ravel()
+    assert np.all(np.abs(corner + beam.side / 2) < beam.side)  # traced again, around the camera
+    assert np.asarray(beam.irradiance).mean() > 0.5 * np.sin(np.radians(60.0))
