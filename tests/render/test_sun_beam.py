@@ -322,8 +322,8 @@ def test_the_coast_s_sand_from_the_terrain_map_keeps_the_unbiased_mean(variant, 
     # A small breaking beach (15 m × 10 m, 25 cm cells, 1:12.5, 0.4 m waves breaking into white water), the sun
     # 45° high, seen from 3 m up: the frame with the sun on the sand from the terrain's map (2 cm cells, the rays
     # cast through the solver's mesh and its foam) against the path tracer alone. 32×18 px, 128 spp, 8 seeds each:
-    # the ratio's σ from the seeds' spread; the bound is the map's resolution bias (+0.09 % ± 0.05 % and
-    # +0.01 % ± 0.07 % measured on coastal_beach, docs/sunlight.md) with room, 1 %, plus 3σ. With the foam left out
+    # the ratio's σ from the seeds' spread; the bound is the map's resolution bias (−0.01 % ± 0.05 % and
+    # −0.09 % ± 0.09 % measured on coastal_beach, docs/sunlight.md) with room, 1 %, plus 3σ. With the foam left out
     # of the map (the bores' white water lets no sun through) coastal_beach read +0.7 % to +1.5 %.
     from oceanrender.coastal.simulation import run_simulation
     from oceanrender.pipeline import Sequence
