@@ -25,21 +25,11 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def water_pixels(renderer, size) -> np.ndarray:
     """(H, W) bool: pixels whose centre's camera ray meets the water's upper surface first."""
-    import drjit as dr
-    import mitsuba as mi
-
     from oceanrender.render.renderer import WATER_ID
-    from oceanrender.render.sea_shading import TOP_NORMAL_Z
+    from oceanrender.render.sun_beam import camera_water_hits
 
-    width, height = size
-    index = dr.arange(mi.UInt32, width * height)
-    film = mi.Point2f((mi.Float(index % width) + 0.5) / width, (mi.Float(index // width) + 0.5) / height)
-    scene = renderer.scene
-    ray, _ = scene.sensors()[0].sample_ray(0.0, 0.5, film, mi.Point2f(0.5, 0.5))
-    si = scene.ray_intersect(ray)
-    water = next(shape for shape in scene.shapes() if shape.id() == WATER_ID)
-    seen = si.is_valid() & (si.shape == mi.ShapePtr(water)) & (si.n.z > TOP_NORMAL_Z)
-    return np.asarray(seen, bool).reshape(height, width)
+    water = next(shape for shape in renderer.scene.shapes() if shape.id() == WATER_ID)
+    return camera_water_hits(renderer.scene, water, *size)[0]
 
 
 def main() -> None:

@@ -556,9 +556,9 @@ class SeaShading:
         det = dr.maximum(jxx * jyy - xy * xy, MIN_JACOBIAN)
         return mi.Vector3f(xy * sy - jyy * sx, xy * sx - jxx * sy, det)
 
-    def shading_frame(self, si, active=True, parallax=False):
+    def shading_frame(self, si, active=True, parallax=False, spacing=None):
         """(unit normal [world], visible-area weight [-], on_top) of a hit: :meth:`normal` and the ratio of
-        the fields' projected area to the mesh's.
+        the fields' projected area to the mesh's (``spacing``: Δ [m] instead of the camera's footprint).
 
         A ray meets the mesh with a density per unit rest area ∝ ω_i·N_g (N_g = ∂p/∂u × ∂p/∂v of
         the triangle, the texture coordinates being rest positions), while the surface the fields
@@ -578,7 +578,7 @@ class SeaShading:
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        area, _, top = self._area_at(si, active, parallax)
+        area, _, top = self._area_at(si, active, parallax, spacing)
         wi = si.to_world(si.wi)
         mesh = dr.dot(wi, dr.cross(si.dp_du, si.dp_dv))
         side = dr.select(mesh >= 0, 1.0, -1.0)

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-__all__ = ["sun_rays", "splat_plane", "splat_points", "TerrainCaustics", "view_centre", "ray_window", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
+__all__ = ["sun_rays", "splat_plane", "splat_points", "TerrainCaustics", "view_centre", "camera_water_hits", "ray_window", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
 
 
 def sun_rays(shading, sun, n_water: float, window: tuple[float, float, float], ray: float):
@@ -337,9 +337,6 @@ class FloorCaustics(_BeamMap):
     def update(self, shading, sun, sun_spectrum, wavelengths, centre) -> None:
         """Trace the frame's beam: ``sun`` (unit, towards it), its normal irradiance ``sun_spectrum`` [W m⁻² nm⁻¹]
         at the evenly spaced ``wavelengths`` [nm], the map centred on ``centre`` (x, y) [m]."""
-        import drjit as dr  # noqa: PLC0415
-        import mitsuba as mi  # noqa: PLC0415
-
         sun = np.asarray(sun, float) / np.linalg.norm(sun)
         depth = max(-self.z, 0.0)
         (x0, y0), window = ray_window(sun, self.n_water, centre, self.side, (depth, depth))
@@ -347,11 +344,20 @@ class FloorCaustics(_BeamMap):
         rays = sun_rays(shading, sun, self.n_water, window, h)
         power, path_power = splat_plane(*rays, self.z, (x0, y0), self.cell, (self.count, self.count),
                                         weights=(None, lambda s: s))
+        self._store(power, path_power, shading_alpha(shading, h), (x0, y0), sun, sun_spectrum, wavelengths)
+
+    def _store(self, power, path_power, alpha: float, corner, sun, sun_spectrum, wavelengths) -> None:
+        """Keep a traced frame's map: the cells' power and power × path blurred by the roughness ``alpha`` [-]
+        the rays did not resolve (:func:`blur_by_path`), over the cells' area; its ``corner`` (x₀, y₀) [m] and
+        the frame's sun (:meth:`set_sun`)."""
+        import drjit as dr  # noqa: PLC0415
+        import mitsuba as mi  # noqa: PLC0415
+
         power, path_power = blur_by_path(power, path_power, self.count, self.cell,
-                                         refraction_spread(shading_alpha(shading, h), sun, self.n_water))
+                                         refraction_spread(alpha, sun, self.n_water))
         area = self.cell * self.cell
         self.irradiance, self.path_irradiance = power / area, path_power / area
-        self.origin = mi.Point2f(x0, y0)
+        self.origin = mi.Point2f(float(corner[0]), float(corner[1]))
         dr.make_opaque(self.irradiance, self.path_irradiance, self.origin)
         self.set_sun(sun, sun_spectrum, wavelengths)
 
@@ -407,22 +413,28 @@ MAX_SHAPES_ABOVE_FLOOR = 4
 VIEW_PROBE = (48, 27)
 
 
-def view_centre(scene, water, side: float, fallback):
-    """(x, y) [m]: the median of where the camera's rays meet the water's upper surface within ``side`` [m] of
-    the camera — the water in view that the maps can cover (``fallback`` where none does). ``water``: the
-    water body's shape; the camera is the scene's first sensor (a :data:`VIEW_PROBE` grid of its rays)."""
+def camera_water_hits(scene, water, columns: int, rows: int):
+    """(seen (rows, columns) bool, the hits): where the rays through the centres of a grid of the camera's
+    film (the scene's first sensor) meet the water's upper surface (``water``: the body's shape) first."""
     import drjit as dr  # noqa: PLC0415
     import mitsuba as mi  # noqa: PLC0415
 
     from .sea_shading import TOP_NORMAL_Z  # noqa: PLC0415
 
-    nx, ny = VIEW_PROBE
-    index = dr.arange(mi.UInt32, nx * ny)
-    film = mi.Point2f((mi.Float(index % nx) + 0.5) / nx, (mi.Float(index // nx) + 0.5) / ny)
+    index = dr.arange(mi.UInt32, columns * rows)
+    film = mi.Point2f((mi.Float(index % columns) + 0.5) / columns, (mi.Float(index // columns) + 0.5) / rows)
     ray, _ = scene.sensors()[0].sample_ray(0.0, 0.5, film, mi.Point2f(0.5, 0.5))
     si = scene.ray_intersect(ray)
-    seen = si.is_valid() & (si.shape == mi.ShapePtr(water)) & (si.n.z > TOP_NORMAL_Z) & (si.t <= float(side))
-    seen = np.asarray(seen, bool)
+    seen = si.is_valid() & (si.shape == mi.ShapePtr(water)) & (si.n.z > TOP_NORMAL_Z)
+    return np.asarray(seen, bool).reshape(rows, columns), si
+
+
+def view_centre(scene, water, side: float, fallback):
+    """(x, y) [m]: the median of where the camera's rays meet the water's upper surface within ``side`` [m] of
+    the camera — the water in view that the maps can cover (``fallback`` where none does). ``water``: the
+    water body's shape; the camera is the scene's first sensor (a :data:`VIEW_PROBE` grid of its rays)."""
+    seen, si = camera_water_hits(scene, water, *VIEW_PROBE)
+    seen = seen.ravel() & (np.asarray(si.t) <= float(side))
     if not seen.any():
         return tuple(float(c) for c in fallback[:2])
     return float(np.median(np.asarray(si.p.x)[seen])), float(np.median(np.asarray(si.p.y)[seen]))
@@ -485,14 +497,13 @@ class TerrainCaustics(FloorCaustics):
         if sun[2] <= 1e-6:
             return
         centre = view_centre(self.scene, self.water, self.side, centre)
-        depth = self.deepest_under(centre)
+        top = float(self.scene.bbox().max.z) + 1.0  # above every shape: where the rays start
+        depth = self.deepest_under(centre, top)
         (x0, y0), (wx, wy, wside) = ray_window(sun, self.n_water, centre, self.side, (0.0, depth), self.margin)
-        top = float(self.scene.bbox().max.z) + 1.0
         lift = top / sun[2]  # from the still level up along the sun's direction to the start plane
         h = self.cell / RAYS_PER_CELL
         count = int(np.ceil(wside / h))
         rows = max(1, TERRAIN_BATCH // count)
-        area = self.cell * self.cell
         shape = (self.count, self.count)
         targets = [dr.zeros(mi.Float, self.count * self.count) for _ in range(2)]
         # (the frame's numbers as opaque values, not literals: one compiled kernel for every frame and launch)
@@ -508,22 +519,18 @@ class TerrainCaustics(FloorCaustics):
             splat_points(landing.x, landing.y, on, [power, power * path], (x0, y0), self.cell, shape, targets)
             dr.eval(*targets)
         alpha = self.alpha if shading is None else shading_alpha(shading, h)
-        targets = blur_by_path(*targets, self.count, self.cell, refraction_spread(alpha, sun, self.n_water))
-        self.irradiance, self.path_irradiance = targets[0] / area, targets[1] / area
-        self.origin = mi.Point2f(x0, y0)
-        dr.make_opaque(self.irradiance, self.path_irradiance, self.origin)
-        self.set_sun(sun, sun_spectrum, wavelengths)
+        self._store(*targets, alpha, (x0, y0), sun, sun_spectrum, wavelengths)
 
-    def deepest_under(self, centre) -> float:
+    def deepest_under(self, centre, top: float) -> float:
         """The deepest floor [m below z = 0] under the map centred on ``centre`` (x, y) [m], at most
-        :attr:`depth`: vertical rays on a :data:`DEPTH_PROBE`² grid over it (the rays' window follows it)."""
+        :attr:`depth`: vertical rays from height ``top`` [m] on a :data:`DEPTH_PROBE`² grid over it (the rays'
+        window follows it)."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
         n = DEPTH_PROBE
         index = dr.arange(mi.UInt32, n * n)
-        corner = mi.Point3f(float(centre[0]) - self.side / 2, float(centre[1]) - self.side / 2,
-                            float(self.scene.bbox().max.z) + 1.0)
+        corner = mi.Point3f(float(centre[0]) - self.side / 2, float(centre[1]) - self.side / 2, float(top))
         dr.make_opaque(corner)
         x = corner.x + (mi.Float(index % n) + 0.5) / n * self.side
         y = corner.y + (mi.Float(index // n) + 0.5) / n * self.side
@@ -545,19 +552,15 @@ class TerrainCaustics(FloorCaustics):
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        from .sea_shading import MAX_AREA_WEIGHT, TOP_NORMAL_Z  # noqa: PLC0415
+        from .sea_shading import TOP_NORMAL_Z  # noqa: PLC0415
 
         s = sun  # (an opaque Vector3f, unit, towards the sun)
         si = self.scene.ray_intersect(mi.Ray3f(start, -s))
         on = si.is_valid() & (si.shape == mi.ShapePtr(self.water)) & (si.n.z > TOP_NORMAL_Z)
         weight = mi.Float(1.0)
         normal = mi.Vector3f(si.sh_frame.n)
-        if shading is not None:
-            area, _, top = shading._area_at(si, on, spacing=h)
-            mesh = dr.dot(s, dr.cross(si.dp_du, si.dp_dv))
-            weight = dr.select(top, dr.minimum(dr.maximum(dr.dot(s, area), 0.0) / dr.maximum(dr.abs(mesh), 1e-12),
-                                               MAX_AREA_WEIGHT), 1.0)
-            normal = dr.select(top, dr.normalize(area), normal)
+        if shading is not None:  # the camera's shading of the hit (its ray comes from the sun: si.wi), at spacing h
+            normal, weight, _ = shading.shading_frame(si, on, spacing=h)
         cos_i = dr.dot(normal, s)
         on &= cos_i > 0.0
         reflectance, cos_t, _, eta_ti = mi.fresnel(dr.maximum(cos_i, 1e-6), mi.Float(self.n_water))
