@@ -275,19 +275,31 @@ def object_shapes(settings: Scene, objects) -> dict:
 #: Id of the open sea's optional seafloor; its height above the water body's bottom face [m] (beyond
 #: Mitsuba's ray offset, ~1e-4 (1 + |p|) m, at the depths of a scene).
 SEAFLOOR_ID = "seafloor"
+#: Reflectance of the open sea's bottom when the scene gives no ``bottom_albedo`` [-]: deep water, where the
+#: light that passes the body's depth is lost (what the water below it would return is left out: at 50 m in the
+#: default scene's clear water that is 13 % of the in-water pass's Z, docs/time_to_quality.md; give a deeper body).
+DEEP_WATER_ALBEDO = 0.0
 SEAFLOOR_LIFT_M = 0.02
 
 
 def seafloor_shapes(settings: Scene, geometry: FrameGeometry) -> dict:
-    """``{"seafloor": rectangle}``: the open sea's flat Lambertian bottom (``[water] bottom_albedo``), or none.
+    """``{"seafloor": rectangle}``: the open sea's flat bottom, or none (a coast has its terrain).
+
+    With ``[water] bottom_albedo`` A it is a Lambertian floor of reflectance A. Without, the sea is
+    deep: the water goes on below the body, so light that reaches its bottom does not come back
+    (reflectance 0; :data:`DEEP_WATER_ALBEDO`). The body's bottom face itself must not be what the
+    light meets there: it is water against vacuum, a mirror by total internal reflection for the
+    rays that refraction sends down at 40–49° from the vertical, which doubled the in-water light of
+    the default view and carried its heavy tail of sun samples (docs/time_to_quality.md, issue 42).
 
     A ``rectangle`` (intersected in its own frame, so exact however large) just above the
     water body's bottom face, spanning the body's bottom (from the first frame's vertices,
     99 % of it). No medium: rays reach it in the water and stay there.
     """
-    albedo = settings.water.bottom_albedo
-    if albedo is None or settings.coastal is not None:
+    if settings.coastal is not None:
         return {}
+    albedo = settings.water.bottom_albedo
+    albedo = DEEP_WATER_ALBEDO if albedo is None else albedo
     import mitsuba as mi  # noqa: PLC0415
 
     depth = settings.water.depth
@@ -479,7 +491,7 @@ class WaterRenderer:
                     render.caustic_cell, render.caustic_window, water_ior(settings),
                     min(render.shaft_depth, deepest), foam=surface_foam_weight(geometry, shading),
                     alpha=roughness)
-            elif render.caustic_cell > 0 and floor is not None and shading is not None:
+            elif render.caustic_cell > 0 and floor is not None and shading is not None and settings.water.bottom_albedo:
                 renderer.floor_caustics = FloorCaustics(floor, -settings.water.depth + SEAFLOOR_LIFT_M,
                                                         render.caustic_cell, render.caustic_window,
                                                         water_ior(settings))

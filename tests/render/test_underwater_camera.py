@@ -96,3 +96,20 @@ def test_an_open_sea_seafloor_is_seen_from_under_the_water(tmp_path):
         assert meta["camera_in_water"] in (True, "true") and int(meta["repaired_pixels"]) == 0
         lower.append(float(channels["Y"][12:, :].mean()))
     assert lower[1] > 2.0 * lower[0], lower
+
+
+def test_a_deep_sea_without_a_floor_returns_no_light_from_its_bottom(tmp_path):
+    # 3 m under the sea, looking 60° from the vertical down (beyond the critical angle of 48.6°, where a
+    # water-vacuum face reflects totally). Without bottom_albedo the sea is deep: its body's bottom must
+    # absorb, so a 6 m deep body shows no more light than a 1000 m deep one (the water below 6 m only adds
+    # light: it scatters some back). The bottom face as it was (water against vacuum) mirrored the whole
+    # downwelling light field there: several times brighter. 16 spp noise is a few % of the mean of 200 pixels.
+    lower = {}
+    for depth in (6.0, 1000.0):
+        channels, meta = _render(tmp_path, f"deep_{int(depth)}",
+                                 "[camera]\nposition = [0.0, 0.0, -3.0]\ntarget = [0.0, 8.66, -8.0]\nfov = 60.0",
+                                 f"[ocean]\nwind_speed = 3.0\nresolution = 64\n[water]\ndepth = {depth}\n",
+                                 resolution=(32, 24), spp=16)
+        assert meta["camera_in_water"] in (True, "true") and int(meta["repaired_pixels"]) == 0
+        lower[depth] = float(channels["Y"][12:, :].mean())
+    assert lower[6.0] <= 1.1 * lower[1000.0], lower
