@@ -62,6 +62,7 @@ def main() -> None:
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "open_ocean.toml"))
     parser.add_argument("--size", default="160x90")
     parser.add_argument("--spp", type=int, default=64)
+    parser.add_argument("--in-water-spp", type=int, default=None, help="the in-water pass's spp (default: the scene's share)")
     parser.add_argument("--seeds", type=int, default=4)
     parser.add_argument("--reference-spp", type=int, default=4096)
     parser.add_argument("--tail-seeds", type=int, default=256)
@@ -121,7 +122,7 @@ def main() -> None:
         return de, {"mean": float(de.mean()), "p95": float(np.percentile(de, 95)),
                     "above_20_pct": float(100.0 * np.mean(de > OUTLIER_DELTA_E))}
 
-    t_spp = renderer.in_water_spp(args.spp)
+    t_spp = args.in_water_spp or renderer.in_water_spp(args.spp)
     rows = {"frame": [], "noisy_reflected": [], "noisy_in_water": []}
     maps = None
     for seed in range(args.seeds):

@@ -455,7 +455,7 @@ class WaterRenderer:
                       **sun_sampling}
         in_water = mi.load_dict(volumetric_integrator(**integrator, lobes="transmission")) if two_pass else None
         sensor = perspective_sensor(settings.camera, xyz_film(width, height, settings.output.spectral_bands, crop),
-                                    spp or settings.output.spp)
+                                    spp or settings.output.spp, render.sampler)
         scene = mi.load_dict({
             "type": "scene",
             "integrator": volumetric_integrator(**integrator, lobes="reflection" if two_pass else "both"),

@@ -153,8 +153,16 @@ def look_at_transform(position, target):
     return mi.ScalarTransform4f().look_at(origin=list(map(float, position)), target=list(map(float, target)), up=up)
 
 
-def perspective_sensor(camera: CameraSettings, film: dict, spp: int) -> dict:
+def perspective_sensor(camera: CameraSettings, film: dict, spp: int, sampler: str = "independent") -> dict:
     """Pinhole ``perspective`` sensor; ``camera.fov`` is the horizontal field of view [deg].
+
+    ``sampler`` is Mitsuba's sampler plugin (``[render] sampler``): ``independent`` draws every
+    number of every sample on its own; ``multijitter`` (Kensler 2013, correlated multi-jittered
+    sampling) stratifies each dimension of a pixel's samples, the sensor's wavelength sample and
+    pixel position among them, so the four wavelengths of the pixel's samples cover the spectrum
+    evenly (issue 42: 0.70x the error at equal samples on the default scene); ``orthogonal``
+    (Jarosz et al. 2019) rounds the count up to a prime's square. Every sample is uniform on its own
+    in all of them: the estimate stays unbiased.
 
     Clip distances [m]: 1 cm, and 10⁸ m, beyond the water body's far ring
     (:func:`oceanrender.surface.radial_mesh.horizon_radius`: 1.1·10⁷ m from 1 km up),
@@ -168,7 +176,7 @@ def perspective_sensor(camera: CameraSettings, film: dict, spp: int) -> dict:
         "far_clip": 1.0e8,
         "to_world": look_at_transform(camera.position, camera.target),
         "film": film,
-        "sampler": {"type": "independent", "sample_count": int(spp)},
+        "sampler": {"type": sampler, "sample_count": int(spp)},
     }
 
 

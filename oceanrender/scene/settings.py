@@ -150,6 +150,10 @@ class RenderSettings(_Section):
     surface_shading: Literal["fields", "vertex"] = Field(
         "fields", description="'fields': every water hit shaded from the sea's fields at its footprint (FFT sea, "
         "surface_roughness 'auto'; docs/pixel_detail.md); 'vertex': normals, α and foam interpolated from the mesh")
+    sampler: Literal["independent", "multijitter", "orthogonal"] = Field(
+        "multijitter", description="Mitsuba's sampler of the frame's samples: 'multijitter' stratifies each of a "
+        "pixel's dimensions (its wavelengths among them: less colour noise, docs/time_to_quality.md); "
+        "'independent' draws each number on its own; 'orthogonal' rounds spp up to a prime's square")
     white_spp: int = Field(1024, ge=16, le=1 << 20, description="samples to measure the adapting white")
     seed: int = Field(0, ge=0, le=SEED_MAX, description="sampler seed (per frame: seed + frame, below 2³²)")
 
