@@ -54,7 +54,7 @@ def seconds(text: str) -> float:
 def main() -> None:
     sys.path.insert(0, str(ROOT))
     from oceanrender.checks import expected_water_vertices, time_estimate  # noqa: PLC0415
-    from oceanrender.pipeline import METER_SPP  # noqa: PLC0415
+    from oceanrender.pipeline import meter_samples  # noqa: PLC0415
     from oceanrender.scene import load_scene, with_overrides  # noqa: PLC0415
 
     rows, fit = [], []
@@ -65,7 +65,7 @@ def main() -> None:
             measured = run(name, resolution, frames, Path(tmp) / f"{index}")
             scene = with_overrides(load_scene(ROOT / "scenes" / f"{name}.toml"),
                                    output={"resolution": (width, height), "frames": (start, end)})
-            estimate = time_estimate(scene, "llvm_ad_spectral", METER_SPP)
+            estimate = time_estimate(scene, "llvm_ad_spectral", meter_samples(width, height))
             vertices = expected_water_vertices(scene)
             samples = width * height * scene.output.spp * (end - start)
             fraction = scene.render.in_water_fraction

@@ -189,11 +189,11 @@ def expected_water_vertices(scene: Scene) -> float:
     return float(min(1.0 / max(1.0 - albedo, 1e-9), scene.render.max_depth))
 
 
-def time_estimate(scene: Scene, variant: str, meter_spp: int, cores: int | None = None) -> TimeEstimate:
+def time_estimate(scene: Scene, variant: str, meter_samples: int, cores: int | None = None) -> TimeEstimate:
     """The run's wall time [s], before any work, from measured per-unit costs (the time's :func:`memory_estimate`).
 
-    Per frame: the FFT sea's geometry, the adaptation meter (``meter_spp`` samples, one
-    frame per frame; the first frame meters its whole window), and the samples: the
+    Per frame: the FFT sea's geometry, the adaptation meter (``meter_samples`` samples per pass, both
+    passes in full, one frame per frame; the first frame meters its whole window), and the samples: the
     camera's pass at ``spp`` and the in-water lobe at ``in_water_fraction`` × spp, each
     sample costing in proportion to its expected vertices in the water
     (:func:`expected_water_vertices`). CPU costs scale with ``cores``; a ``cuda`` variant
@@ -217,7 +217,9 @@ def time_estimate(scene: Scene, variant: str, meter_spp: int, cores: int | None 
         geometry = SECONDS_PER_FFT_POINT * scene.ocean.resolution ** 2 * scene.ocean.cascades * 2.0 / min(cores, 2)
     vision = scene.vision
     follows = vision.adaptation_luminance == "frame" and vision.adaptation_time > 0
-    meter = (geometry + call + pixels * meter_spp * per_sample) if follows else 0.0
+    per_meter_sample = SECONDS_PER_SAMPLE_CORE + SECONDS_PER_WATER_VERTEX_CORE * expected_water_vertices(scene)
+    per_meter_sample /= GPU_SPEED_UP_OVER_TWO_CORES * 2 if gpu else cores
+    meter = (geometry + passes * call + meter_samples * per_meter_sample) if follows else 0.0
     start, end = scene.output.frames
     window = len(adaptation_window(start, vision.adaptation_time, scene.output.fps)) if follows else 0
     setup = SETUP_SECONDS["gpu" if gpu else "cpu"] + max(window - 1, 0) * meter

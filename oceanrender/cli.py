@@ -382,9 +382,9 @@ def _render(args: argparse.Namespace, scene: Scene, client) -> int:
     where = "" if client is None else (f", {len(client.scheduler_info()['workers'])} Dask worker(s)"
                                        + (f" at {args.cluster}" if args.cluster else ""))
     from .checks import time_estimate  # noqa: PLC0415
-    from .pipeline import METER_SPP  # noqa: PLC0415
+    from .pipeline import meter_samples  # noqa: PLC0415
 
-    estimate = time_estimate(scene, runtime.variant, METER_SPP)
+    estimate = time_estimate(scene, runtime.variant, meter_samples(width, height))
     print(f"oceanrender {__version__}: {scene.name}, frames {start}:{end}, {width}x{height}, "
           f"{scene.output.spp} spp, variant {runtime.variant}"
           + (f" (LLVM {runtime.llvm_library})" if runtime.llvm_library else "") + f"{where} -> {out_dir}; "

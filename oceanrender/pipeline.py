@@ -84,24 +84,24 @@ def vision_for_scene(scene: Scene) -> VisionModel:
                        display_max_luminance=v.display_luminance, exposure=v.exposure)
 
 
-#: Samples per pixel of the adaptation meter's render of a frame [-] (see :meth:`Sequence.meter`).
-METER_SPP = 2
+#: Blocks across the view of the adaptation meter [-] (rows in the frame's aspect: 80 × 45 at 16:9), see
+#: :meth:`Sequence.meter`. A block is a fixed fraction of the view, so a preview and a final frame adapt alike.
+METER_COLUMNS = 80
 
-#: The meter averages its render over blocks of this many pixels on a side before the log-average [-]:
-#: 2 spp × 16 pixels = 32 samples per block, so the log of a noisy block (Jensen) is within ~1 % of the
-#: log of its mean, and the eye's adaptation pools over a region, not a single receptor, anyway.
-METER_BLOCK = 4
+#: Samples per block and pass of the meter [-]: 32, so the log of a noisy block (Jensen) is within ~1 % of the
+#: log of its mean; the eye's adaptation pools over a region, not a single receptor, anyway.
+METER_SAMPLES = 32
 
 #: Added to a frame's seed for its meter render, so meter and frame use independent samples [-].
 METER_SEED_OFFSET = 1 << 30
 
 
-def block_mean(image: np.ndarray, block: int) -> np.ndarray:
-    """Mean over ``block`` × ``block`` pixel blocks of an (H, W) image (edge rows/columns that do not fill a block dropped)."""
-    h, w = (image.shape[0] // block) * block, (image.shape[1] // block) * block
-    if h == 0 or w == 0:
-        return image
-    return image[:h, :w].reshape(h // block, block, w // block, block).mean(axis=(1, 3))
+def meter_samples(width: int, height: int) -> int:
+    """Samples per pass of one meter reading of a ``width`` × ``height`` frame [-]."""
+    from .render.pixels import grid_shape  # noqa: PLC0415
+
+    rows, columns = grid_shape(width, height, METER_COLUMNS)
+    return rows * columns * METER_SAMPLES
 
 
 #: Reflectance of the grey card of ``adaptation_luminance = "daylight"`` [-]: the mid-grey to which
@@ -201,6 +201,7 @@ class Sequence:
                                             objects=self.objects.frame(self.time_of(first_frame)))
         self.vision = vision_for_scene(scene)
         self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
+        self._frame_geometry = None  # (frame, geometry) of the frame compute_frame is metering
         self._map_illuminance: float | None = None  # [lx], of an [environment] map, measured once
 
     def _measure_white(self, frame: int) -> None:
@@ -242,18 +243,22 @@ class Sequence:
     def meter(self, frame: int) -> float:
         """Log-average luminance of ``frame``'s view [cd m⁻²], from a quick render of its own (cached).
 
-        A :data:`METER_SPP`-spp render of the frame (own seed), averaged over
-        :data:`METER_BLOCK`² pixel blocks, then log-averaged. It depends on the
-        frame number alone, so every process computes the same value.
+        The mean luminance of each block of a :data:`METER_COLUMNS`-wide grid over the view, from
+        :data:`METER_SAMPLES` samples per block at uniform positions in it (own seed;
+        :meth:`~oceanrender.render.renderer.WaterRenderer.block_xyz`: one compiled kernel per pass,
+        whatever the frame), then log-averaged. It depends on the frame number alone, so every
+        process computes the same value.
         """
         if frame not in self._meters:
-            geometry = self.geometry(frame)
+            known = [g for g in (self._frame_geometry, self._loaded) if g is not None and g[0] == frame]
+            geometry = known[0][1] if known else self.geometry(frame)
             self.point(frame)
             # (the floor's map left out: the quick render's mean is the path tracer's alone, and a frame of the
             # window is not traced for a map it would use once; the frame's own render traces it)
             self.renderer.update_water(geometry, floor_map=False)
-            xyz, _ = self.renderer.render_xyz(METER_SPP, seed=self.scene.render.seed + frame + METER_SEED_OFFSET)
-            self._meters[frame] = adaptation_luminance_log_average(block_mean(xyz[..., 1], METER_BLOCK))
+            xyz = self.renderer.block_xyz(METER_COLUMNS, METER_SAMPLES,
+                                          seed=self.scene.render.seed + frame + METER_SEED_OFFSET)
+            self._meters[frame] = adaptation_luminance_log_average(xyz[..., 1])
             self._loaded = (frame, geometry)
         return self._meters[frame]
 
@@ -342,7 +347,7 @@ class Sequence:
         value = self.scene.vision.adaptation_luminance
         if target is not None:
             return (f"followed over time (tau = {self.scene.vision.adaptation_time:g} s) towards the meter's "
-                    f"log-average {target:.6g} cd/m2 ({METER_SPP} spp, {METER_BLOCK}x{METER_BLOCK} blocks)")
+                    f"log-average {target:.6g} cd/m2 ({METER_SAMPLES} samples in each of {METER_COLUMNS} blocks across)")
         if value == "frame":
             return "this frame's log-average luminance"
         if value == "daylight":
@@ -372,18 +377,20 @@ class Sequence:
         """
         own = {stage: 0.0 for stage in STAGES}
         tic = time.perf_counter()
-        target = None
-        if self.follows_adaptation:
-            adaptation, target = self.followed_adaptation(frame)
-            own["meter"] += time.perf_counter() - tic
-            tic = time.perf_counter()
         if self._loaded is not None and self._loaded[0] == frame:
             geometry = self._loaded[1]
         else:
             geometry = self.geometry(frame)
-        self._loaded = None
         tac = time.perf_counter()
         own["geometry"] += tac - tic
+        target = None
+        if self.follows_adaptation:
+            self._frame_geometry = (frame, geometry)  # the meter's reading of this frame uses it too
+            adaptation, target = self.followed_adaptation(frame)
+            self._frame_geometry = None
+            tic, tac = tac, time.perf_counter()
+            own["meter"] += tac - tic
+        self._loaded = None
         self.point(frame)
         self.renderer.update_water(geometry)
         tic = time.perf_counter()

@@ -103,14 +103,14 @@ def test_an_object_reflectance_outside_0_1_is_refused_before_any_work(tmp_path):
 def test_the_time_estimate_grows_with_the_work_and_names_what_dominates():
     """Estimates from the measured unit costs (checks.SECONDS_PER_*): linear in samples, frames and cores."""
     base = scene(output={"resolution": [320, 180], "spp": 16, "frames": [0, 2]})
-    one = checks.time_estimate(base, "llvm_ad_spectral", meter_spp=2, cores=2)
-    more = checks.time_estimate(with_overrides(base, output={"spp": 1 << 20}), "llvm_ad_spectral", 2, cores=2)
+    one = checks.time_estimate(base, "llvm_ad_spectral", meter_samples=115200, cores=2)
+    more = checks.time_estimate(with_overrides(base, output={"spp": 1 << 20}), "llvm_ad_spectral", 115200, cores=2)
     assert one.total == pytest.approx(one.setup + 2 * one.per_frame)
     assert more.per_frame > 1e4 * one.per_frame / 2 and more.key == "[output] spp"
     assert "h" in more.line() or "days" in more.line()
-    wide = checks.time_estimate(base, "llvm_ad_spectral", 2, cores=4)
+    wide = checks.time_estimate(base, "llvm_ad_spectral", 115200, cores=4)
     assert wide.per_frame < one.per_frame
-    gpu = checks.time_estimate(base, "cuda_ad_spectral", 2)
+    gpu = checks.time_estimate(base, "cuda_ad_spectral", 115200)
     assert gpu.per_frame < one.per_frame / 10
 
 

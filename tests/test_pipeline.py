@@ -293,14 +293,14 @@ def test_followed_adaptation_depends_on_the_frame_alone(variant):
     assert frames[3].metadata["adaptation_luminance_cd_m2"] == pytest.approx(expected, rel=ROUNDOFF32)
     assert again.metadata["adaptation_luminance_cd_m2"] == pytest.approx(expected, rel=ROUNDOFF32)
     np.testing.assert_allclose(again.channels["R"], frames[3].channels["R"], rtol=1e-5, atol=1e-6)
-    # The meter estimates the log-average over 4×4-pixel blocks of the frame itself (2 spp against the
-    # frame's 4): within 10 %, the noise of 24 blocks of 32 samples. (Per pixel, this tiny noisy frame's
-    # log-average is 60× lower: black 4-spp pixels weigh ln δ; on the 320×180 default frame the two agree
-    # within 1.3 %.)
-    from oceanrender.pipeline import METER_BLOCK, block_mean
+    # The meter estimates the log-average over the blocks of its grid of the frame itself (32 samples per
+    # block against the frame's 4 per pixel): within 10 %, the noise of blocks of 32 samples. (Per pixel, this
+    # tiny noisy frame's log-average is 60× lower: black 4-spp pixels weigh ln δ.)
+    from oceanrender.pipeline import METER_COLUMNS
+    from oceanrender.render.pixels import grid_mean
     from oceanrender.vision.brightness import adaptation_luminance_log_average
 
-    own = adaptation_luminance_log_average(block_mean(frames[3].channels["Y"].astype(np.float64), METER_BLOCK))
+    own = adaptation_luminance_log_average(grid_mean(frames[3].channels["Y"].astype(np.float64), METER_COLUMNS))
     assert run.meter(3) == pytest.approx(own, rel=0.1)
     assert "followed over time" in frames[3].metadata["adaptation"]
 

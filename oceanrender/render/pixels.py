@@ -83,13 +83,18 @@ class PixelSums:
 class PixelSampler:
     """Renders sample slots of chosen pixels with a loaded scene's sensor and an integrator (JIT variants)."""
 
-    def __init__(self, scene, integrator=None, lanes: int = LANES):
+    def __init__(self, scene, integrator=None, lanes: int = LANES, sensor: int = 0):
         import mitsuba as mi  # noqa: PLC0415
 
         self.scene = scene
         self.integrator = integrator if integrator is not None else scene.integrator()
-        self.sensor = scene.sensors()[0]
-        self.width, self.height = (int(v) for v in self.sensor.film().crop_size())
+        self.sensor_index = int(sensor)
+        self.sensor = scene.sensors()[self.sensor_index]
+        film = self.sensor.film()
+        # pixels are numbered in the film's crop window; positions are in the whole image
+        self.width, self.height = (int(v) for v in film.crop_size())
+        self.offset = tuple(int(v) for v in film.crop_offset())
+        self.size = tuple(int(v) for v in film.size())
         self.lanes = int(lanes)
         self.sampler = self.sensor.sampler().clone()  # once: a new object per launch could recompile
         # The film's total response and one response per XYZ channel (specfilm's m_srf, m_srfs).
@@ -109,11 +114,11 @@ class PixelSampler:
         index = mi.UInt32(padded)
         sampler = self.sampler
         sampler.seed(dr.opaque(mi.UInt32, int(seed) % (1 << 32)), self.lanes)
-        x = mi.Float(index % self.width)
-        y = mi.Float(index // self.width)
+        x = mi.Float(index % self.width + self.offset[0])
+        y = mi.Float(index // self.width + self.offset[1])
         position = mi.Point2f(x, y) + sampler.next_2d(active)  # box filter: uniform in the pixel
         wavelength_sample = sampler.next_1d(active)
-        adjusted = position / mi.ScalarVector2f(self.width, self.height)
+        adjusted = position / mi.ScalarVector2f(*self.size)
         ray, weight = self.sensor.sample_ray_differential(0.0, wavelength_sample, adjusted, mi.Point2f(0.5),
                                                           active)
         radiance, _, _ = self.integrator.sample(self.scene, sampler, ray, None, active)
@@ -141,3 +146,58 @@ class PixelSampler:
             pixels = slots[start:start + self.lanes]
             sums.add(pixels, self._launch(pixels, seed + k))
         return sums
+
+
+def grid_shape(width: int, height: int, columns: int) -> tuple[int, int]:
+    """(rows, columns) of a grid of ``columns`` blocks across a ``width`` × ``height`` image, rows in its
+    aspect, at most one block per pixel each way."""
+    columns = max(1, min(int(columns), int(width)))
+    return max(1, min(int(round(columns * height / width)), int(height))), columns
+
+
+def grid_edges(width: int, height: int, rows: int, columns: int) -> tuple[np.ndarray, np.ndarray]:
+    """Pixel edges of the grid's blocks: block (r, c) is columns [x_c, x_{c+1}) and rows [y_r, y_{r+1})."""
+    return (np.arange(columns + 1) * int(width)) // columns, (np.arange(rows + 1) * int(height)) // rows
+
+
+def grid_mean(image: np.ndarray, columns: int) -> np.ndarray:
+    """Mean of an (H, W) image over each block of :func:`grid_shape`'s grid → (rows, columns)."""
+    height, width = image.shape[:2]
+    rows, columns = grid_shape(width, height, columns)
+    edges_x, edges_y = grid_edges(width, height, rows, columns)
+    sums = np.add.reduceat(np.add.reduceat(np.asarray(image, float), edges_y[:-1], axis=0), edges_x[:-1], axis=1)
+    return sums / np.outer(np.diff(edges_y), np.diff(edges_x))
+
+
+def block_slots(width: int, height: int, columns: int, samples: int, seed: int) -> tuple[np.ndarray, np.ndarray, tuple]:
+    """Pixels of ``samples`` samples in each block of a grid over a ``width`` × ``height`` image.
+
+    The grid has ``columns`` blocks across (at most one per pixel) and rows in the image's aspect, each
+    block the pixels [⌊j W/c⌋, ⌊(j+1) W/c⌋) × ..., so a block is a fixed fraction of the view whatever
+    the resolution. Each sample picks a pixel of its block uniformly (numpy's PCG64 seeded by ``seed``:
+    the same slots in every process); :class:`PixelSampler` then draws its position uniformly in the
+    pixel, so the samples are uniform over the block's area.
+
+    Returns (pixel index y·W + x per sample, block index per sample, (rows, columns)).
+    """
+    rows, columns = grid_shape(width, height, columns)
+    edges_x, edges_y = grid_edges(width, height, rows, columns)
+    block = np.repeat(np.arange(rows * columns), int(samples))
+    bx, by = block % columns, block // columns
+    rng = np.random.Generator(np.random.PCG64(int(seed)))
+    x = edges_x[bx] + np.floor(rng.random(block.size) * (edges_x[bx + 1] - edges_x[bx])).astype(np.int64)
+    y = edges_y[by] + np.floor(rng.random(block.size) * (edges_y[by + 1] - edges_y[by])).astype(np.int64)
+    return y * int(width) + x, block, (rows, columns)
+
+
+def block_means(sampler: PixelSampler, pixels: np.ndarray, blocks: np.ndarray, shape: tuple, seed: int) -> np.ndarray:
+    """Mean XYZ [cd m⁻²] of each block (rows, columns, 3) from one sample per slot (``pixels``, ``blocks``
+    from :func:`block_slots`), rendered by ``sampler`` with seeds ``seed``, ``seed`` + 1, ... per launch."""
+    n = shape[0] * shape[1]
+    sums = np.zeros((n, 3))
+    for k, start in enumerate(range(0, pixels.size, sampler.lanes)):
+        xyz = sampler._launch(pixels[start:start + sampler.lanes].astype(np.uint32), seed + k)
+        for c in range(3):
+            sums[:, c] += np.bincount(blocks[start:start + sampler.lanes], weights=xyz[:, c], minlength=n)
+    counts = np.bincount(blocks, minlength=n)
+    return (sums / np.maximum(counts, 1)[:, None]).reshape(*shape, 3)

@@ -6,7 +6,7 @@ Per frame only the water mesh's vertex positions and normals change, through
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -405,6 +405,8 @@ class WaterRenderer:
     sun_angles: tuple[float, float] | None = None
     #: (shading fields, (camera, sun)) the floor's map was last traced for (:meth:`update_caustics`).
     caustics_for: tuple | None = None
+    #: sensor → the :class:`~.pixels.PixelSampler` of each pass (:meth:`block_xyz`), made on first use.
+    pixel_samplers: dict = field(default_factory=dict)
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -632,6 +634,42 @@ class WaterRenderer:
         if self.bands:
             self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]
         return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))
+
+    def block_xyz(self, columns: int, samples: int, seed: int) -> np.ndarray:
+        """Mean XYZ [cd m⁻²] of the blocks of a grid over the view ((rows, columns, 3)): ``samples`` samples per
+        block and pass, at uniform positions in it (:func:`~.pixels.block_slots`), both passes of a frame.
+
+        Rendered by :class:`~.pixels.PixelSampler`: a fixed number of lanes per launch and an opaque
+        seed, so every call runs the same compiled kernel per pass whatever the frame (a ``mi.render``
+        with fewer samples than the frame's would compile its own). Unbiased for each block.
+        """
+        import mitsuba as mi  # noqa: PLC0415
+
+        from .pixels import block_means, block_slots  # noqa: PLC0415
+
+        if not mi.variant().startswith(("llvm", "cuda")):
+            raise NotImplementedError("block_xyz needs a JIT variant (llvm_* or cuda_*)")
+        sensor = 1 if self.camera_in_water() else 0
+        width, height = self.resolution
+        pixels, blocks, shape = block_slots(width, height, columns, samples, seed)
+        samplers = _block_samplers(self, sensor)
+        total = block_means(samplers[0], pixels, blocks, shape, seed)
+        for sampler in samplers[1:]:  # the in-water pass: its own seed stream, as render_xyz
+            total = total + block_means(sampler, pixels, blocks, shape, in_water_seed(seed))
+        return total
+
+
+def _block_samplers(renderer: "WaterRenderer", sensor: int) -> list:
+    """The :class:`~.pixels.PixelSampler` of each pass of ``renderer``'s frames seen by ``sensor`` (made once)."""
+    from .pixels import PixelSampler  # noqa: PLC0415
+
+    cache = renderer.pixel_samplers
+    if sensor not in cache:
+        integrators = [renderer.scene.integrator()]
+        if renderer.in_water is not None and sensor == 0:  # under the water nothing is split: one pass
+            integrators.append(renderer.in_water)
+        cache[sensor] = [PixelSampler(renderer.scene, integrator, sensor=sensor) for integrator in integrators]
+    return cache[sensor]
 
 
 class WhiteMeter:
