@@ -200,6 +200,11 @@ class Sequence:
                                             spp=self.spp, resolution=self.resolution,
                                             objects=self.objects.frame(self.time_of(first_frame)))
         self.vision = vision_for_scene(scene)
+        if self.follows_adaptation:
+            # NOTE: the meter's samplers made now, before any render: making Mitsuba objects adds instances to the
+            # registries the kernels dispatch over, so a frame rendered before them would run another kernel than
+            # one rendered after (other float round-off): a resumed run would then differ from a whole one.
+            self.renderer.prepare_blocks()
         self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
         self._frame_geometry = None  # (frame, geometry) of the frame compute_frame is metering
         self._map_illuminance: float | None = None  # [lx], of an [environment] map, measured once
@@ -324,10 +329,19 @@ class Sequence:
             "sun_azimuth_deg": f"{self.sun_angles.azimuth:.6g}",
             "sun_motion": self._sun_motion_label(),
             "sky": self._sky_label(),
-            "denoiser": "Intel Open Image Denoise (pyoidn), colour only, HDR" if self.scene.render.denoise else "none",
+            "denoiser": self._denoiser_label(),
             "repaired_pixels": repaired,
             "channels": "XYZ absolute [cd/m2 for Y]; RGB linear sRGB after vision model [1 = display white]",
         }
+
+    def _denoiser_label(self) -> str:
+        render = self.scene.render
+        if not render.denoise:
+            return "none"
+        label = "Intel Open Image Denoise (pyoidn), colour only, HDR"
+        if render.chroma_radius > 0:
+            label += f"; chromaticity averaged over {render.chroma_radius} px by denoised luminance"
+        return label
 
     def _sky_label(self) -> str:
         """What lights the frame: sunsky, or the environment map with its scale and horizontal illuminance."""
@@ -383,13 +397,6 @@ class Sequence:
             geometry = self.geometry(frame)
         tac = time.perf_counter()
         own["geometry"] += tac - tic
-        target = None
-        if self.follows_adaptation:
-            self._frame_geometry = (frame, geometry)  # the meter's reading of this frame uses it too
-            adaptation, target = self.followed_adaptation(frame)
-            self._frame_geometry = None
-            tic, tac = tac, time.perf_counter()
-            own["meter"] += tac - tic
         self._loaded = None
         self.point(frame)
         self.renderer.update_water(geometry)
@@ -400,11 +407,22 @@ class Sequence:
         tac = time.perf_counter()
         own["render"] += tac - tic
         if self.scene.render.denoise:
-            from .render.denoise import denoise_XYZ  # noqa: PLC0415
+            from .render.denoise import denoise_frame  # noqa: PLC0415
 
-            xyz = denoise_XYZ(xyz)
+            xyz = denoise_frame(xyz, self.scene.render.chroma_radius)
             tic, tac = tac, time.perf_counter()
             own["denoise"] += tac - tic
+        # the passes of the frame's own scene, before the meter loads other frames' water
+        passes = self.renderer.passes(self.scene.output.passes) if self.scene.output.passes else {}
+        target = None
+        if self.follows_adaptation:
+            # NOTE: after the frame's render: the meter's kernels are then compiled once, not again after
+            # the first render of a run (measured: 6 s more on a cold kernel cache, 2 cores).
+            self._frame_geometry = (frame, geometry)  # the meter's reading of this frame uses it too
+            adaptation, target = self.followed_adaptation(frame)
+            self._frame_geometry = None
+            tic, tac = tac, time.perf_counter()
+            own["meter"] += tac - tic
         if target is None:
             adaptation = adaptation_luminance(self.scene, xyz, self.white_xyz)
         rgb = self.vision.apply(xyz, self.white_xyz, adaptation)
@@ -414,8 +432,7 @@ class Sequence:
             spectral = spectral_frame(self.renderer.last_bands, metadata)
         channels = {name: np.asarray(xyz[..., i], np.float32) for i, name in enumerate("XYZ")}
         channels.update({name: np.asarray(rgb[..., i], np.float32) for i, name in enumerate("RGB")})
-        if self.scene.output.passes:
-            channels.update(self.renderer.passes(self.scene.output.passes))
+        channels.update(passes)
         rendered = RenderedFrame(frame=frame, channels=channels, metadata=metadata, rgb8=encode_sRGB_8bit(rgb),
                                  spectral=spectral, repaired=repaired, seconds=own)
         own["vision"] += time.perf_counter() - tac

@@ -54,6 +54,10 @@ References
 .. [4] SMPTE ST 2065-1:2012, Academy Color Encoding Specification (ACES):
        the AP0 primaries and the XYZ → ACES2065-1 matrix (as in colour-science's
        ``RGB_COLOURSPACES["ACES2065-1"]``, checked equal in the tests).
+.. [5] F. Durand and J. Dorsey (2002), "Fast bilateral filtering for the display of
+       high-dynamic-range images", ACM Trans. Graph. 21(3), 257–266,
+       doi:10.1145/566654.566574 — §5, the piecewise-linear bilateral filter (the
+       range axis sampled at levels, a linear filter per level, interpolation between them).
 """
 
 from __future__ import annotations
@@ -211,6 +215,86 @@ def denoise_XYZ(xyz: np.ndarray, albedo: np.ndarray | None = None, normal: np.nd
     """
     ap0 = np.asarray(xyz, dtype=np.float64) @ XYZ_TO_AP0.T
     return np.asarray(denoise(ap0, albedo, normal, hdr=True, quality=quality), dtype=np.float64) @ AP0_TO_XYZ.T
+
+
+def denoise_frame(xyz: np.ndarray, chroma_radius: int = 0) -> np.ndarray:
+    """A frame's denoising [XYZ's unit]: OIDN colour only (:func:`denoise_XYZ`), then, with ``chroma_radius``
+    > 0 [px], its chromaticity from the *noisy* frame's sums over neighbours of similar denoised luminance
+    (:func:`smooth_chroma`), its luminance OIDN's. The default view at 320×180, 64 spp against a 4096-spp
+    reference (own error 0.24): mean ΔE00 1.81 noisy, 1.15 OIDN, 0.71 with the chroma filter at r = 4
+    (p95 5.18, 3.13, 1.99); mean Z +0.11 % (docs/time_to_quality.md)."""
+    clean = denoise_XYZ(xyz)
+    if chroma_radius <= 0:
+        return clean
+    return smooth_chroma(np.maximum(np.asarray(xyz, dtype=np.float64), 0.0), np.maximum(clean[..., 1], 0.0),
+                         radius=int(chroma_radius))
+
+
+#: Range of the chroma filter [-]: std of the Gaussian in natural-log luminance (±10 % is one σ).
+CHROMA_SIGMA_LOG_Y = 0.1
+#: Spatial radius of the chroma filter [px]: a (2r + 1)² box.
+CHROMA_RADIUS_PX = 4
+
+
+def smooth_chroma(xyz: np.ndarray, guide_Y: np.ndarray, radius: int = CHROMA_RADIUS_PX,
+                  sigma: float = CHROMA_SIGMA_LOG_Y) -> np.ndarray:
+    """An XYZ frame with its chromaticity averaged over neighbours of similar luminance, luminance kept.
+
+    Colour noise of a spectral path tracer is chroma noise: each sample carries four wavelengths, so
+    neighbouring pixels of the same water differ in colour far more than in lightness (issue 42), while
+    the water's true colour changes slowly across the view. Per pixel p the ratios X/Y and Z/Y become the
+    ratios of weighted sums over its (2r + 1)² box,
+
+        X'/Y' = Σ_q w_pq X_q / Σ_q w_pq Y_q,   w_pq = exp(−(ln G_p − ln G_q)² / 2σ²),
+
+    with G the guide (a denoised luminance): a cross-bilateral filter in log luminance, computed as
+    Durand & Dorsey's piecewise-linear bilateral filter [5] (levels of ln G every σ, a box filter of
+    X, Y, Z weighted by each level's Gaussian, linear interpolation between the two levels around
+    ln G_p). Sums of X and Y, not means of X/Y: a dark, noisy pixel counts by its luminance. The
+    result is Y = ``guide_Y`` with the averaged chromaticity (x/y, z/y of the sums).
+
+    Parameters
+    ----------
+    xyz : ndarray (H, W, 3)       The frame's XYZ (any common unit, e.g. cd m⁻²), non-negative Y.
+    guide_Y : ndarray (H, W)      The luminance to keep and to guide by [XYZ's unit] (e.g. OIDN's output).
+    radius : int                  Box radius r [px], ≥ 0 (0: the frame as it is, luminance replaced).
+    sigma : float                 σ of the range Gaussian in ln luminance [-], > 0.
+
+    Returns
+    -------
+    ndarray (H, W, 3) float64     XYZ with Y = ``guide_Y``.
+    """
+    from scipy.ndimage import uniform_filter  # noqa: PLC0415
+
+    xyz = np.asarray(xyz, dtype=np.float64)
+    guide = np.asarray(guide_Y, dtype=np.float64)
+    if xyz.ndim != 3 or xyz.shape[2] != 3 or guide.shape != xyz.shape[:2]:
+        raise ValueError(f"need xyz (H, W, 3) and guide_Y (H, W), got {xyz.shape} and {guide.shape}")
+    if not (int(radius) >= 0 and sigma > 0):
+        raise ValueError(f"need radius ≥ 0 and sigma > 0, got {radius}, {sigma}")
+    tiny = 1e-12 * max(float(np.max(guide)), 1e-30)
+    log_g = np.log(np.maximum(guide, tiny))
+    lo, hi = float(log_g.min()), float(log_g.max())
+    levels = lo + sigma * np.arange(int(np.ceil((hi - lo) / sigma)) + 2)
+    size = 2 * int(radius) + 1
+    position = (log_g - lo) / sigma  # ln G in units of the level spacing
+    below = np.clip(np.floor(position).astype(int), 0, levels.size - 2)
+    t = position - below
+    out = np.zeros_like(xyz)
+    used = np.zeros(levels.size, dtype=bool)
+    used[np.unique(below)] = True
+    used[np.unique(below) + 1] = True
+    for k, level in enumerate(levels):
+        if not used[k]:  # no pixel interpolates from this level
+            continue
+        weight = np.exp(-0.5 * ((log_g - level) / sigma) ** 2)
+        sums = np.stack([uniform_filter(weight * xyz[..., c], size=size, mode="nearest") for c in range(3)], axis=-1)
+        share = np.where(below == k, 1.0 - t, 0.0) + np.where(below + 1 == k, t, 0.0)
+        out += share[..., None] * sums
+    y = out[..., 1]
+    ok = y > 0
+    ratio = np.where(ok[..., None], out / np.where(ok, y, 1.0)[..., None], xyz / np.maximum(xyz[..., 1:2], tiny))
+    return ratio * guide[..., None]
 
 
 # ---------------------------------------------------------------------------

@@ -635,6 +635,14 @@ class WaterRenderer:
             self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]
         return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))
 
+    def prepare_blocks(self) -> None:
+        """Make :meth:`block_xyz`'s samplers for both sensors now (JIT variants; else nothing)."""
+        import mitsuba as mi  # noqa: PLC0415
+
+        if mi.variant().startswith(("llvm", "cuda")):
+            for sensor in (0, 1):
+                _block_samplers(self, sensor)
+
     def block_xyz(self, columns: int, samples: int, seed: int) -> np.ndarray:
         """Mean XYZ [cd m⁻²] of the blocks of a grid over the view ((rows, columns, 3)): ``samples`` samples per
         block and pass, at uniform positions in it (:func:`~.pixels.block_slots`), both passes of a frame.

@@ -146,7 +146,12 @@ class RenderSettings(_Section):
                     "caustic_window, sheared along the beam, their mean beyond it, read along every in-water "
                     "segment (docs/sunlight.md); 0: off, the volume's sunlight from the path tracer's connections")
     shaft_depth: float = Field(12.0, gt=0, le=200, description="depth the shafts' planes reach below the mean level [m]")
-    denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only)")
+    denoise: bool = Field(False, description="denoise each frame with Intel Open Image Denoise (colour only), then "
+                                             "its chromaticity (chroma_radius)")
+    chroma_radius: int = Field(
+        4, ge=0, le=64, description="(with denoise) radius [px] over which the chromaticity is averaged among "
+        "pixels of similar denoised luminance, the luminance kept (the colour noise of four wavelengths per "
+        "sample; docs/time_to_quality.md); 0: OIDN alone")
     surface_shading: Literal["fields", "vertex"] = Field(
         "fields", description="'fields': every water hit shaded from the sea's fields at its footprint (FFT sea, "
         "surface_roughness 'auto'; docs/pixel_detail.md); 'vertex': normals, α and foam interpolated from the mesh")
