@@ -178,13 +178,16 @@ def grade_arrays(folder: Path, scene_path: Path, denoise: bool) -> dict:
         row = {"spp": int(path.stem.split("_")[1]), **{k: round(v, 4) for k, v in
                                                         delta_e_stats(grading.delta_e(image)).items()}}
         if denoise:
-            from oceanrender.render.denoise import denoise_XYZ
+            from oceanrender.render.denoise import CHROMA_RADIUS_PX, denoise_frame
 
-            tic = time.perf_counter()
-            clean = denoise_XYZ(image)
-            row["denoise_s"] = round(time.perf_counter() - tic, 2)
-            row.update({f"denoised_{k}": round(v, 4) for k, v in delta_e_stats(grading.delta_e(clean)).items()})
-            row["denoised_mean_Y_over_reference"] = round(float(clean[..., 1].mean() / reference[..., 1].mean()), 5)
+            for label, radius in (("denoised", 0), ("chroma", CHROMA_RADIUS_PX)):
+                tic = time.perf_counter()
+                clean = denoise_frame(image, radius)
+                row[f"{label}_s"] = round(time.perf_counter() - tic, 2)
+                row.update({f"{label}_{k}": round(v, 4) for k, v in delta_e_stats(grading.delta_e(clean)).items()})
+                for c, name in enumerate("XYZ"):
+                    row[f"{label}_mean_{name}_over_reference"] = round(
+                        float(clean[..., c].mean() / reference[..., c].mean()), 5)
         rows.append(row)
     return {"graded": rows}
 
@@ -205,14 +208,17 @@ def markdown(result: dict) -> str:
              f"{result.get('sampler', '')}; reference {result.get('reference_spp')} spp (own error "
              f"{result.get('reference_error')}); exponent {result.get('exponent_raw')} raw, "
              f"{result.get('exponent_noise')} less the reference's error", "",
-             "| spp | render s | ΔE00 mean | p95 | > 20 | noise | OIDN mean | OIDN p95 | OIDN Y bias |",
-             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "| spp | render s | ΔE00 mean | p95 | > 20 | noise | OIDN mean / p95 | + chroma mean / p95 | "
+             "+ chroma s | + chroma bias X, Y, Z |",
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    nan = float("nan")
     for c in result.get("curve", []):
         g = graded.get(c["spp"], {})
+        bias = ", ".join(f"{100 * (g.get(f'chroma_mean_{n}_over_reference', nan) - 1):+.2f}" for n in "XYZ")
         lines.append(f"| {c['spp']} | {c['render_s']} | {c['mean']:.2f} | {c['p95']:.2f} | {c['above_20_pct']:.3f} % | "
-                     f"{c['noise']:.2f} | {g.get('denoised_mean', float('nan')):.2f} | "
-                     f"{g.get('denoised_p95', float('nan')):.2f} | "
-                     f"{100 * (g.get('denoised_mean_Y_over_reference', float('nan')) - 1):+.2f} % |")
+                     f"{c['noise']:.2f} | {g.get('denoised_mean', nan):.2f} / {g.get('denoised_p95', nan):.2f} | "
+                     f"{g.get('chroma_mean', nan):.2f} / {g.get('chroma_p95', nan):.2f} | "
+                     f"{g.get('chroma_s', nan)} | {bias} % |")
     for i, frame in enumerate(result.get("pipeline", {}).get("frames", [])):
         lines.append(f"\nframe {i}: " + ", ".join(f"{k} {v} s" for k, v in frame.items()))
     return "\n".join(lines)

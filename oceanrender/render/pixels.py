@@ -25,8 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .renderer import K_M
-from .scene import cmf_response_spectra
+from .scene import K_M, cmf_response_spectra
 
 #: Sample slots per kernel launch [-]: one compiled kernel for every pass (2¹⁷, ≈ 0.4 s here).
 LANES = 1 << 17

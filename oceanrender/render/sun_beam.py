@@ -851,7 +851,9 @@ class VolumeBeam(_BeamMap):
             lxx = dr.sqrt(cxx)
             lyx = dr.select(lxx > 1e-7, cxy / dr.maximum(lxx, 1e-7), 0.0)
             lyy = dr.sqrt(dr.maximum(cyy - lyx * lyx, 0.0))
-            g = mi.warp.square_to_std_normal(jitter)
+            # (inside (0, 1): a stratified sampler's numbers can round to 0 or 1 in float32, where Box–Muller's
+            # logarithm is infinite and the direction NaN)
+            g = mi.warp.square_to_std_normal(dr.clip(mi.Point2f(jitter), 1e-7, 0.99999994))
             mx, my = mx + lxx * g.x, my + lyx * g.x + lyy * g.y
         horizontal = dr.minimum(mx * mx + my * my, 1.0 - 1e-6)
         direction = dr.normalize(mi.Vector3f(mx, my, -dr.sqrt(1.0 - horizontal)))

@@ -70,6 +70,10 @@ from __future__ import annotations
 import math
 
 
+#: The largest float32 below 1: uniform numbers are clamped to it where 1 would make a logarithm infinite.
+ONE_MINUS_EPSILON = 0.99999994
+
+
 def cox_munk_mean_square_slope(wind_speed: float) -> float:
     """Total mean-square slope of a clean sea surface [-] (Cox & Munk 1954).
 
@@ -383,7 +387,8 @@ def trace_path(scene, sampler, ray, medium, active, *, is_water_surface, sun, et
         # variants (only RGB variants pick a channel) and always samples on the first
         # wavelength: checked, the mean distance is 1/σ_t(λ₀) for channel 0 and 3 alike. The
         # medium is homogeneous, so the distance is drawn here on the hero's σ_t instead.
-        u_flight = sampler.next_1d(in_water)
+        # (below 1: a stratified sampler's u can round to 1.0 in float32, and ln 0 would send the flight to ∞)
+        u_flight = dr.minimum(sampler.next_1d(in_water), ONE_MINUS_EPSILON)
         mei = medium.sample_interaction(ray, u_flight, 0, in_water)
         sigma_t = mei.sigma_t
         sigma_hero = sigma_t[0]

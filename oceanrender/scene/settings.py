@@ -402,7 +402,8 @@ class FoamSettings(_Section):
 class WaterSettings(_Section):
     """The water body and its medium."""
 
-    depth: float = Field(50.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]")
+    depth: float = Field(1000.0, gt=0, le=11_000, description="depth of the water body's flat bottom [m]; without "
+                         "bottom_albedo the water below it is deep (its light lost): deep enough for clear water")
     ior: float | None = Field(None, ge=1.1, le=2.0, description="refractive index of water [-] (a surface that "
                                                                "refracts: 1.1 to 2); left out: from temperature and "
                                                                "salinity when either is given (Quan & Fry 1995, at "

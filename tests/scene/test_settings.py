@@ -55,7 +55,7 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[vision]\nadaptation_time = inf\n", "[vision] adaptation_time: Input should be a finite number"),
         ("[render]\nvariant = 'llvm_ad_rgb'\n", "[render] variant: expected 'auto' or one of cuda_ad_spectral, llvm_ad_spectral"),
         ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
-        ("[camera]\nposition = [0, 0, -60]\ntarget = [0, 10, -60]\n", "[camera] position: the camera is at z = -60 m, at or below the water body's bottom"),
+        ("[camera]\nposition = [0, 0, -1060]\ntarget = [0, 10, -1060]\n", "[camera] position: the camera is at z = -1060 m, at or below the water body's bottom"),
         ("[water]\ntemperature = 45\n", "[water] temperature: Input should be less than or equal to 40"),
         ("[water]\ntemperature = -5\n", "[water] temperature: Input should be greater than or equal to -2"),
         ("[water]\nsalinity = 50\n", "[water] salinity: Input should be less than or equal to 42"),
@@ -295,7 +295,7 @@ def test_a_view_replaces_the_camera_and_names_its_own_folder():
 
 @pytest.mark.parametrize("views, key", [
     ({"bad name": {"position": [0, 0, 5], "target": [0, 9, 0]}}, "views"),
-    ({"low": {"position": [0, 0, -51], "target": [0, 9, 0]}}, "[camera] position"),  # below the 50 m bottom
+    ({"low": {"position": [0, 0, -1001], "target": [0, 9, 0]}}, "[camera] position"),  # below the 1000 m bottom
     ({"same": {"position": [0, 0, 5], "target": [0, 0, 5]}}, "views"),
 ])
 def test_bad_views_are_refused_naming_the_key(views, key):
