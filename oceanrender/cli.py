@@ -652,25 +652,11 @@ def cmd_optics(args: argparse.Namespace) -> int:
     from .export.optics_report import write_optics_report  # noqa: PLC0415
     from .optics.report import REPORT_WAVELENGTHS, scene_optics  # noqa: PLC0415
     from .render.irradiance import sky_irradiance_spectra  # noqa: PLC0415
-    from .optics.water import pure_seawater_iops  # noqa: PLC0415
-    from .optics.scene_water import water_composition, water_ior, water_phase_table  # noqa: PLC0415
+    from .optics.scene_water import scene_iops, water_composition, water_ior, water_phase_table  # noqa: PLC0415
 
     wavelengths = REPORT_WAVELENGTHS
     composition = water_composition(scene)
-    if scene.water.jerlov_type is not None:
-        from .optics.jerlov_types import iops_WilliamsonHollins2022  # noqa: PLC0415
-
-        a, b, bb = iops_WilliamsonHollins2022(scene.water.jerlov_type, wavelengths)
-    elif composition is None:
-        iops = pure_seawater_iops(scene.water.iop_table)
-        a = np.interp(wavelengths, iops.wavelengths, iops.absorption)
-        b = np.interp(wavelengths, iops.wavelengths, iops.scattering)
-        bb = b / 2  # pure water's VSF is symmetric about 90° (Morel 1974)
-    else:
-        from .optics.components import composition_iops  # noqa: PLC0415
-
-        result = composition_iops(composition, wavelengths)
-        a, b, bb = result.absorption, result.scattering, result.backscattering
+    a, b, bb = scene_iops(scene, wavelengths)
     direct, diffuse = sky_irradiance_spectra(scene.sun, wavelengths, spp=scene.render.white_spp)
     depth = scene.water.depth
     z = np.linspace(0.0, min(depth, 100.0), 101)
@@ -679,7 +665,7 @@ def cmd_optics(args: argparse.Namespace) -> int:
     metadata = {"scene": scene.name, "variant": runtime.variant, "oceanrender_version": __version__,
                 "composition": None if composition is None else composition.__dict__,
                 "jerlov_type": scene.water.jerlov_type,
-                "bottom": "none (albedo 0): the rendered water body ends in a transparent bottom"}
+                "bottom": "none (albedo 0): the rendered water body ends in a black floor at [water] depth"}
     written = write_optics_report(args.out, report, metadata)
     i = int(np.argmin(np.abs(wavelengths - 550.0)))
     print(f"{scene.name}: a(550) {a[i]:.4g} m⁻¹, b(550) {b[i]:.4g} m⁻¹, K_d(550) {report.light.K_d[i]:.4g} m⁻¹, "

@@ -2,12 +2,14 @@
 
 Components and their models
 ---------------------------
-water           ``spectra/pure_seawater.csv`` (Williamson & Hollins 2022 a_w, Morel 1974
-                b_sw at 35 PSU) rescaled to the salinity by Morel's (1 + 0.3 S/37);
-                b_b,w = b_w / 2 (symmetric VSF).
-phytoplankton   absorption :func:`aph_HoepffnerSathyendranath1991` (Gaussian pigment bands,
-                packaged in three size classes); scattering :func:`bp_LoiselMorel1998`;
-                b_b = 0.01 b (:data:`PHYTOPLANKTON_BB_RATIO`).
+water           absorption a_w(T, S) of WOPP v3 (:func:`~oceanrender.optics.water.aw_WOPP3`) at
+                the composition's temperature and salinity; scattering from
+                ``spectra/pure_seawater.csv`` (Morel 1974 b_sw at 35 PSU) rescaled to the
+                salinity by Morel's (1 + 0.3 S/37); b_b,w = b_w / 2 (symmetric VSF).
+phytoplankton   absorption :func:`aph_Bricaud1998` (a_φ = A_φ Chl^E_φ, measured; default) or
+                :func:`aph_HoepffnerSathyendranath1991` (Gaussian pigment bands, packaged in
+                three size classes), chosen by ``phytoplankton_absorption``; scattering
+                :func:`bp_LoiselMorel1998`; b_b = 0.01 b (:data:`PHYTOPLANKTON_BB_RATIO`).
 cdom            :func:`ag_BricaudMorelPrieur1981`, no scattering.
 soil, kaolinite, illite, calcite
                 mass-specific a*, b*, b_b* [m² g⁻¹] from Mie theory, ``spectra/mineral_*.csv``
@@ -32,9 +34,12 @@ import numpy as np
 
 from .tables import VISIBLE_RANGE_NM, SpectralDataError, read_spectral_table
 from .water import (
+    SALINITY_RANGE_PSU,
     TABLE_SALINITY_PSU,
+    TEMPERATURE_RANGE_C,
     MediumOptics,
     WaterIOPs,
+    aw_WOPP3,
     pure_seawater_iops,
     seawater_scattering_salinity_factor,
 )
@@ -52,6 +57,11 @@ MINERAL_TABLES = MappingProxyType({
     "calcite": "mineral_calcite.csv",
 })
 
+#: Models of phytoplankton absorption a_φ(λ, Chl) (``[composition] phytoplankton_absorption``); the first is
+#: the default: Bricaud et al. (1998)'s measured power laws, or the Gaussian-band model this project had
+#: until issue 43 (Hoepffner & Sathyendranath 1991 with packaging).
+PHYTOPLANKTON_ABSORPTION_MODELS = ("Bricaud 1998", "Hoepffner-Sathyendranath 1991")
+
 #: Morel (1974) depolarisation-derived anisotropy of pure-water scattering, β ∝ 1 + 0.835 cos²θ.
 WATER_ANISOTROPY = 0.835
 
@@ -62,8 +72,8 @@ class WaterComposition:
 
     Attributes
     ----------
-    temperature_c : float       Water temperature [°C], −2 to 40.
-    salinity_psu : float        Salinity [PSU], 0 to 42.
+    temperature_c : float       Water temperature [°C], 0 to 40 (sets a_w, :func:`~oceanrender.optics.water.aw_WOPP3`).
+    salinity_psu : float        Salinity [PSU], 0 to 40 (sets a_w and b_sw).
     chlorophyll_mg_m3 : float   Chlorophyll a [mg m⁻³].
     soil_g_m3 : float           Iron-oxide-bearing soil particles [g m⁻³].
     kaolinite_g_m3 : float      Kaolinite clay particles [g m⁻³].
@@ -71,14 +81,8 @@ class WaterComposition:
     calcite_g_m3 : float        Calcite / limestone particles [g m⁻³].
     cdom_a440_per_m : float     CDOM absorption at 440 nm [m⁻¹].
     cdom_slope_per_nm : float   CDOM spectral slope S [nm⁻¹], 0.005 to 0.03.
-
-    Notes
-    -----
-    The temperature is validated and kept, but pure-water absorption is the
-    table's (no Ψ_T correction): a 10 °C change alters a_w by ≲ 3 % at
-    400-700 nm and ≲ 6 % near 740 nm (Ψ_T of Sullivan et al. 2006, Appl. Opt.
-    45:5294; Röttgers et al. WOPP v3). :class:`CompositionIOPs` says so in
-    its ``notes``.
+    phytoplankton_absorption : str
+        One of :data:`PHYTOPLANKTON_ABSORPTION_MODELS` (default Bricaud et al. 1998).
     """
 
     temperature_c: float = 20.0
@@ -90,9 +94,15 @@ class WaterComposition:
     calcite_g_m3: float = 0.0
     cdom_a440_per_m: float = 0.0
     cdom_slope_per_nm: float = 0.014
+    phytoplankton_absorption: str = PHYTOPLANKTON_ABSORPTION_MODELS[0]
 
     def __post_init__(self) -> None:
+        if self.phytoplankton_absorption not in PHYTOPLANKTON_ABSORPTION_MODELS:
+            raise ValueError(f"phytoplankton_absorption: expected one of {', '.join(PHYTOPLANKTON_ABSORPTION_MODELS)}, "
+                             f"got {self.phytoplankton_absorption!r}")
         for f in dataclasses.fields(self):
+            if f.name == "phytoplankton_absorption":
+                continue
             value = getattr(self, f.name)
             if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
                 raise ValueError(f"{f.name}: must be a number, got {value!r}")
@@ -101,8 +111,8 @@ class WaterComposition:
         for name in ("chlorophyll_mg_m3", "soil_g_m3", "kaolinite_g_m3", "illite_g_m3", "calcite_g_m3", "cdom_a440_per_m"):
             if getattr(self, name) < 0:
                 raise ValueError(f"{name}: a concentration cannot be negative, got {getattr(self, name)!r}")
-        _in_range(self, "temperature_c", -2.0, 40.0)
-        _in_range(self, "salinity_psu", 0.0, 42.0)
+        _in_range(self, "temperature_c", *TEMPERATURE_RANGE_C)
+        _in_range(self, "salinity_psu", *SALINITY_RANGE_PSU)
         _in_range(self, "cdom_slope_per_nm", 0.005, 0.03)
 
     @classmethod
@@ -314,6 +324,75 @@ def _red_taper(wl: np.ndarray) -> np.ndarray:
     lo, hi = APH_TAPER_NM
     t = np.clip((wl - lo) / (hi - lo), 0.0, 1.0)
     return 0.5 * (1.0 + np.cos(np.pi * t))
+
+
+#: Bricaud et al. (1998) a_φ = A_φ Chl^E_φ table in ``spectra/`` (400-700 nm, 2 nm; see its header).
+BRICAUD1998_TABLE = "aph_bricaud1998.csv"
+#: Wavelengths the Bricaud et al. (1998) table spans [nm].
+BRICAUD1998_RANGE_NM = (400.0, 700.0)
+
+
+@functools.lru_cache(maxsize=1)
+def _bricaud1998_table():
+    return read_spectral_table(BRICAUD1998_TABLE, required=("A_phi_m2_per_mg", "E_phi"), cover=BRICAUD1998_RANGE_NM)
+
+
+def aph_Bricaud1998(wavelengths_nm, chlorophyll_mg_m3):
+    """Phytoplankton absorption a_φ(λ) = A_φ(λ) Chl^E_φ(λ) [m⁻¹] (Bricaud et al. 1998).
+
+    The power laws Bricaud et al. fitted to 1166 spectra of oceanic (case 1) waters, Chl
+    0.02-25 mg m⁻³, 400-700 nm (their Eq. 2 and Table 2, ``spectra/aph_bricaud1998.csv``),
+    linearly interpolated between the table's 2 nm steps. Outside 400-700 nm, where they
+    published nothing, the spectral shape of :func:`aph_HoepffnerSathyendranath1991` at the
+    same Chl continues the curve from its end values: a_φ(λ) = a_φ(400) s(λ)/s(400) below
+    400 nm and a_φ(700) s(λ)/s(700) above 700 nm, s the Gaussian-band model (which ends at
+    0 from 750 nm).
+
+    Parameters
+    ----------
+    wavelengths_nm : array_like    Wavelengths [nm], 360-830.
+    chlorophyll_mg_m3 : float      Chlorophyll a [mg m⁻³], ≥ 0 (fitted for 0.02-25).
+
+    Returns
+    -------
+    ndarray    a_φ(λ) [m⁻¹].
+
+    References
+    ----------
+    .. [1] Bricaud, A., Morel, A., Babin, M., Allali, K. & Claustre, H. (1998), "Variations of
+       light absorption by suspended particles with chlorophyll a concentration in oceanic
+       (case 1) waters: analysis and implications for bio-optical models", J. Geophys. Res.
+       103(C13), 31033-31044, doi:10.1029/98JC02712.
+    """
+    wl = np.asarray(wavelengths_nm, dtype=float)
+    chl = float(chlorophyll_mg_m3)
+    if chl < 0:
+        raise ValueError(f"chlorophyll_mg_m3: a concentration cannot be negative, got {chl!r}")
+    if chl == 0:
+        return np.zeros_like(wl)
+    table = _bricaud1998_table()
+    lo, hi = BRICAUD1998_RANGE_NM
+
+    def power_law(x):
+        return table.at("A_phi_m2_per_mg", x) * chl ** table.at("E_phi", x)  # [1] Eq. 2
+
+    inside = np.clip(wl, lo, hi)
+    a = power_law(inside)
+    if np.any((wl < lo) | (wl > hi)):
+        shape = aph_HoepffnerSathyendranath1991(wl, chl)
+        ends = aph_HoepffnerSathyendranath1991(np.array([lo, hi]), chl)
+        a = np.where(wl < lo, a * shape / ends[0], np.where(wl > hi, a * shape / ends[1], a))
+    return a
+
+
+def phytoplankton_absorption(model: str, wavelengths_nm, chlorophyll_mg_m3) -> np.ndarray:
+    """a_φ(λ) [m⁻¹] of the named model (:data:`PHYTOPLANKTON_ABSORPTION_MODELS`) at Chl [mg m⁻³]."""
+    if model == "Bricaud 1998":
+        return aph_Bricaud1998(wavelengths_nm, chlorophyll_mg_m3)
+    if model == "Hoepffner-Sathyendranath 1991":
+        return aph_HoepffnerSathyendranath1991(wavelengths_nm, chlorophyll_mg_m3)
+    raise ValueError(f"phytoplankton_absorption: expected one of {', '.join(PHYTOPLANKTON_ABSORPTION_MODELS)}, "
+                     f"got {model!r}")
 
 
 def bp_LoiselMorel1998(wavelengths_nm, chlorophyll_mg_m3):
@@ -540,19 +619,22 @@ def composition_iops(composition: WaterComposition, wavelengths_nm) -> Compositi
     b_w = np.interp(wl, water.wavelengths, water.scattering) * salinity_factor
     zero = np.zeros_like(wl)
     parts = {
-        "water": ComponentIOPs(np.interp(wl, water.wavelengths, water.absorption), b_w, 0.5 * b_w),
+        "water": ComponentIOPs(aw_WOPP3(wl, c.temperature_c, c.salinity_psu), b_w, 0.5 * b_w),
     }
     b_ph = bp_LoiselMorel1998(wl, c.chlorophyll_mg_m3)
-    parts["phytoplankton"] = ComponentIOPs(aph_HoepffnerSathyendranath1991(wl, c.chlorophyll_mg_m3), b_ph, PHYTOPLANKTON_BB_RATIO * b_ph)
+    a_ph = phytoplankton_absorption(c.phytoplankton_absorption, wl, c.chlorophyll_mg_m3)
+    parts["phytoplankton"] = ComponentIOPs(a_ph, b_ph, PHYTOPLANKTON_BB_RATIO * b_ph)
     parts["cdom"] = ComponentIOPs(ag_BricaudMorelPrieur1981(wl, c.cdom_a440_per_m, c.cdom_slope_per_nm), zero, zero)
     for name in MINERAL_TABLES:
         conc = getattr(c, f"{name}_g_m3")
         a_s, b_s, bb_s = mineral_mass_specific_iops(name, wl)
         parts[name] = ComponentIOPs(conc * a_s, conc * b_s, conc * bb_s)
     notes = (
-        f"pure-water absorption is the table's (no temperature correction); temperature_c={c.temperature_c:g} "
-        "changes a_w by <~3 % (400-700 nm) and <~6 % (700-830 nm) per 10 degC",
-        "phytoplankton absorption is tapered to 0 between 700 and 750 nm",
+        f"pure-water absorption a_w at {c.temperature_c:g} degC and {c.salinity_psu:g} PSU (WOPP v3, linear Psi_T, Psi_S)",
+        f"phytoplankton absorption: {c.phytoplankton_absorption}"
+        + (" (400-700 nm; outside, the Gaussian-band model's shape joined to its ends)"
+           if c.phytoplankton_absorption == "Bricaud 1998" else "")
+        + "; tapered to 0 between 700 and 750 nm",
     )
     return CompositionIOPs(wavelengths=wl, composition=c, components=MappingProxyType(parts), notes=notes)
 

@@ -1,12 +1,14 @@
 """Inherent optical properties (IOPs) of the water body.
 
 Pure sea water: absorption a_w and scattering b_sw from ``spectra/pure_seawater.csv``,
-the salinity change of b_sw, and the refractive index n(λ, T, S). Coefficients in m⁻¹,
-wavelengths in nm, temperature in °C, salinity in PSU.
+the absorption of pure water at any temperature and salinity (WOPP v3,
+:func:`aw_WOPP3`), the salinity change of b_sw, and the refractive index n(λ, T, S).
+Coefficients in m⁻¹, wavelengths in nm, temperature in °C, salinity in PSU.
 """
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -26,9 +28,13 @@ DEFAULT_IOR = 1.333
 PURE_SEAWATER_TABLE = "pure_seawater.csv"
 TABLE_SALINITY_PSU = 35.0
 
-#: Ranges accepted for the water's state: temperature [°C] and salinity [PSU].
-TEMPERATURE_RANGE_C = (-2.0, 40.0)
-SALINITY_RANGE_PSU = (0.0, 42.0)
+#: Ranges accepted for the water's state: temperature [°C] and salinity [PSU]. The state sets the
+#: absorption of pure water (:func:`aw_WOPP3`), whose linear Ψ_T, Ψ_S model is used here for natural
+#: waters from 0 to 40 °C and 0 to 40 PSU (docs/optics.md, "Pure-water absorption against temperature and
+#: salinity", says which part of that range was measured and what the rest extrapolates); the index and
+#: b_sw accept the same range.
+TEMPERATURE_RANGE_C = (0.0, 40.0)
+SALINITY_RANGE_PSU = (0.0, 40.0)
 #: Temperature and salinity taken for the one of the two left out [°C, PSU].
 DEFAULT_TEMPERATURE_C = 20.0
 DEFAULT_SALINITY_PSU = 35.0
@@ -56,8 +62,8 @@ def seawater_refractive_index(wavelength_nm, temperature_c: float = DEFAULT_TEMP
     Parameters
     ----------
     wavelength_nm : array_like   Vacuum wavelength [nm], 360-830 (the fit's range is 400-700).
-    temperature_c : float        Temperature [°C], −2 to 40 (beyond 0-30: extrapolated).
-    salinity_psu : float         Salinity [PSU], 0 to 42 (beyond 35: extrapolated).
+    temperature_c : float        Temperature [°C], 0 to 40 (beyond 30: extrapolated).
+    salinity_psu : float         Salinity [PSU], 0 to 40 (beyond 35: extrapolated).
 
     Returns
     -------
@@ -80,6 +86,51 @@ def seawater_refractive_index(wavelength_nm, temperature_c: float = DEFAULT_TEMP
         raise ValueError(f"wavelength_nm: expected 360 to 830 nm, got {np.min(wl):g} to {np.max(wl):g}")
     return (1.31405 + (1.779e-4 - 1.05e-6 * t + 1.6e-8 * t * t) * s - 2.02e-6 * t * t  # [1]
             + (15.868 + 0.01155 * s - 0.00423 * t) / wl - 4382.0 / wl**2 + 1.1455e6 / wl**3)
+
+
+#: WOPP v3 table of pure-water absorption at 20 °C, 0 PSU and its Ψ_S, Ψ_T in ``spectra/`` (see its header).
+WOPP_TABLE = "pure_water_wopp_v3.csv"
+#: Reference state of the WOPP table's a_w: 20 °C, 0 PSU.
+WOPP_REFERENCE_TEMPERATURE_C = 20.0
+
+
+@functools.lru_cache(maxsize=1)
+def _wopp_table():
+    return read_spectral_table(WOPP_TABLE, required=("a_w_20C_0PSU_per_m", "psi_S_per_m_per_PSU", "psi_T_per_m_per_C"))
+
+
+def aw_WOPP3(wavelengths_nm, temperature_c: float = WOPP_REFERENCE_TEMPERATURE_C,
+             salinity_psu: float = 0.0) -> np.ndarray:
+    """Absorption of pure water a_w(λ, T, S) [m⁻¹] (WOPP v3).
+
+    a_w(T, S) = a_w(20 °C, 0 PSU) + Ψ_T (T − 20 °C) + Ψ_S S, linear in T and S, with the
+    WOPP v3 tables (Röttgers, HZG, 2016): a_w of Mason, Cone & Fry (2016, Table 2) below
+    510 nm and of the WOPP compilation above, Ψ_T and Ψ_S of Röttgers, McKee & Utschig (2014).
+    Linear interpolation between the table's 2 nm steps.
+
+    Parameters
+    ----------
+    wavelengths_nm : array_like   Wavelengths [nm], 350 to 900.
+    temperature_c : float         Water temperature [°C], :data:`TEMPERATURE_RANGE_C`.
+    salinity_psu : float          Salinity [PSU], :data:`SALINITY_RANGE_PSU`.
+
+    Returns
+    -------
+    ndarray   a_w [m⁻¹].
+
+    References
+    ----------
+    .. [1] Röttgers, R., McKee, D. & Utschig, C. (2014), "Temperature and salinity correction
+       coefficients for light absorption by water in the visible to infrared spectral region",
+       Opt. Express 22, 25093-25108, doi:10.1364/OE.22.025093.
+    .. [2] Mason, J. D., Cone, M. T. & Fry, E. S. (2016), "Ultraviolet (250-550 nm) absorption
+       spectrum of pure water", Appl. Opt. 55, 7163-7172, doi:10.1364/AO.55.007163.
+    """
+    t, s = _check_state(temperature_c, salinity_psu)
+    table = _wopp_table()
+    wl = np.asarray(wavelengths_nm, dtype=float)
+    return (table.at("a_w_20C_0PSU_per_m", wl) + table.at("psi_T_per_m_per_C", wl) * (t - WOPP_REFERENCE_TEMPERATURE_C)
+            + table.at("psi_S_per_m_per_PSU", wl) * s)  # [1]
 
 
 def seawater_scattering_salinity_factor(salinity_psu: float, table_salinity_psu: float) -> float:

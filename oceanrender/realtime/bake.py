@@ -192,28 +192,12 @@ class LutSet:
 
 
 def scene_iops(scene: Scene, wavelengths: NDArray) -> tuple[NDArray, NDArray, NDArray]:
-    """a, b, b_b [m⁻¹] of the scene's water at ``wavelengths`` [nm], as ``oceanrender optics`` computes them.
+    """a, b, b_b [m⁻¹] of the scene's water at ``wavelengths`` [nm], as ``oceanrender optics`` computes them
+    (:func:`oceanrender.optics.scene_water.scene_iops`: a Jerlov type, the ``[composition]``, or pure sea
+    water at the scene's temperature and salinity)."""
+    from ..optics.scene_water import scene_iops as iops_of_scene  # noqa: PLC0415
 
-    A Jerlov type's measured IOPs, the ``[composition]``'s component model,
-    or pure sea water from the table with b_b = b/2 (pure water's volume
-    scattering function is symmetric about 90°, Morel 1974).
-    """
-    from ..optics.scene_water import water_composition  # noqa: PLC0415
-    from ..optics.water import pure_seawater_iops  # noqa: PLC0415
-
-    if scene.water.jerlov_type is not None:
-        from ..optics.jerlov_types import iops_WilliamsonHollins2022  # noqa: PLC0415
-
-        return iops_WilliamsonHollins2022(scene.water.jerlov_type, wavelengths)
-    composition = water_composition(scene)
-    if composition is None:
-        iops = pure_seawater_iops(scene.water.iop_table)
-        b = np.interp(wavelengths, iops.wavelengths, iops.scattering)
-        return np.interp(wavelengths, iops.wavelengths, iops.absorption), b, b / 2
-    from ..optics.components import composition_iops  # noqa: PLC0415
-
-    result = composition_iops(composition, wavelengths)
-    return result.absorption, result.scattering, result.backscattering
+    return iops_of_scene(scene, wavelengths)
 
 
 def measure_scene_light(scene: Scene, settings: BakeSettings, white_XYZ: NDArray | None = None) -> SceneLight:

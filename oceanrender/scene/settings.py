@@ -408,10 +408,14 @@ class WaterSettings(_Section):
                                                                "refracts: 1.1 to 2); left out: from temperature and "
                                                                "salinity when either is given (Quan & Fry 1995, at "
                                                                "550 nm), else 1.333")
-    temperature: float | None = Field(None, ge=-2, le=40, description="water temperature [°C], −2 to 40: the "
-                                                                       "refractive index (a_w is not corrected)")
-    salinity: float | None = Field(None, ge=0, le=42, description="salinity [PSU], 0 to 42: the refractive index "
-                                                                   "and the scattering of sea water (Morel 1974)")
+    temperature: float | None = Field(None, ge=0, le=40, description="water temperature [°C], 0 to 40 (the range "
+                                                                      "of the pure-water absorption model): the "
+                                                                      "absorption of pure water (WOPP v3 Ψ_T) and the "
+                                                                      "refractive index")
+    salinity: float | None = Field(None, ge=0, le=40, description="salinity [PSU], 0 to 40 (the range of the "
+                                                                   "pure-water absorption model): the absorption "
+                                                                   "(WOPP v3 Ψ_S), the refractive index and the "
+                                                                   "scattering of sea water (Morel 1974)")
     iop_table: str = Field("pure_seawater.csv", min_length=1, max_length=4096,
                            description="table of a, b [m⁻¹]: a bare file name is in spectra/, a path is relative "
                                        "to the scene file")
@@ -454,6 +458,9 @@ class CompositionSettings(_Section):
     calcite_g_m3: float | None = Field(None, ge=0, le=10_000, description="limestone/calcite particles [g m⁻³]")
     cdom_a440_per_m: float | None = Field(None, ge=0, le=100, description="CDOM absorption at 440 nm [m⁻¹]")
     cdom_slope_per_nm: float | None = Field(None, ge=0.005, le=0.03, description="CDOM spectral slope [nm⁻¹]")
+    phytoplankton_absorption: Literal["Bricaud 1998", "Hoepffner-Sathyendranath 1991"] | None = Field(
+        None, description="phytoplankton absorption: Bricaud et al. (1998)'s measured a_φ = A_φ Chl^E_φ (the "
+                          "default), or the Gaussian-band model of Hoepffner & Sathyendranath (1991) with packaging")
     particle_phase: Literal["Henyey-Greenstein", "Fournier-Forand", "Petzold"] = Field(
         "Henyey-Greenstein", description="phase function of the particles: one HG lobe with g(λ) fitted to "
                                          "b_bp/b_p, Fournier-Forand per component, or Petzold's measured San Diego "

@@ -57,8 +57,11 @@ def test_defaults_fill_missing_sections(tmp_path):
         ("[water]\ndepth = -3\n", "[water] depth: Input should be greater than 0"),
         ("[camera]\nposition = [0, 0, -1060]\ntarget = [0, 10, -1060]\n", "[camera] position: the camera is at z = -1060 m, at or below the water body's bottom"),
         ("[water]\ntemperature = 45\n", "[water] temperature: Input should be less than or equal to 40"),
-        ("[water]\ntemperature = -5\n", "[water] temperature: Input should be greater than or equal to -2"),
-        ("[water]\nsalinity = 50\n", "[water] salinity: Input should be less than or equal to 42"),
+        # issue 43: the range of the pure-water absorption model (WOPP v3, 0-40 °C, 0-40 PSU)
+        ("[water]\ntemperature = -1\n", "[water] temperature: Input should be greater than or equal to 0"),
+        ("[water]\nsalinity = 41\n", "[water] salinity: Input should be less than or equal to 40"),
+        ("[composition]\npreset = 'green coastal'\nphytoplankton_absorption = 'Morel 1988'\n",
+         "[composition] phytoplankton_absorption: Input should be 'Bricaud 1998' or 'Hoepffner-Sathyendranath 1991'"),
         ("[water]\nsalinity = -1\n", "[water] salinity: Input should be greater than or equal to 0"),
         ("[water]\nior = 1.34\nsalinity = 30\n", "water: ior: leave it out when temperature or salinity is given"),
         ("[composition]\ntemperature_c = 10\n", "[composition] temperature_c"),
