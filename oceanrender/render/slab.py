@@ -54,7 +54,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SlabLight", "first_optical_depth_K", "slab_light_field"]
+__all__ = ["SlabKd", "SlabLight", "first_optical_depth_K", "slab_kd", "slab_light_field"]
 
 _BAND_NM = (540.0, 560.0)
 _HALF_WIDTH_M = 5000.0
@@ -88,10 +88,13 @@ class SlabLight:
 
 
 def slab_scene(a: float, b: float, phase: tuple[np.ndarray, np.ndarray], zenith_deg: float,
-               plane_depth: float, emits_up: bool, spp: int, water: bool = True) -> dict:
+               plane_depth: float, emits_up: bool, spp: int, water: bool = True,
+               n_water: float | None = None) -> dict:
     """Mitsuba scene of the reciprocal problem (1): the slab, a plane emitting L_e = 1 at
     ``plane_depth`` [m] upwards (or downwards), and a radiance meter looking down along the beam;
-    without the slab for ``water=False``."""
+    without the slab for ``water=False``. With ``n_water`` the slab's faces are a smooth dielectric
+    (water of that index under vacuum, Mitsuba's ``dielectric``) and ``zenith_deg`` is the beam's
+    angle in the air (Eq. 2)."""
     import mitsuba as mi  # noqa: PLC0415
 
     from .phase import TABULATED_PLUGIN, register_tabulated  # noqa: PLC0415
@@ -111,7 +114,9 @@ def slab_scene(a: float, b: float, phase: tuple[np.ndarray, np.ndarray], zenith_
     scene = {
         "type": "scene",
         "integrator": {"type": "volpath", "max_depth": -1, "rr_depth": 500},
-        "slab": {"type": "cube", "bsdf": {"type": "null"},
+        "slab": {"type": "cube",
+                 "bsdf": {"type": "null"} if n_water is None else {"type": "dielectric", "int_ior": float(n_water),
+                                                                   "ext_ior": 1.0},
                  "interior": {"type": "homogeneous", "sigma_t": c, "albedo": b / c,
                               "phase": {"type": TABULATED_PLUGIN, "wavelengths": "550,5,1",
                                         "mu": ",".join(f"{x:.17g}" for x in mu),
@@ -185,3 +190,61 @@ def first_optical_depth_K(z, E_d, E_d0: float) -> float:
     roots = np.roots(coeffs - np.array([0.0, 0.0, math.log(E_d0) - 1.0]))
     real = roots[np.isreal(roots)].real
     return float(1.0 / real[np.argmin(np.abs(real - z[1]))])
+
+
+@dataclass(frozen=True)
+class SlabKd:
+    """K̄_d of :func:`slab_kd`: ln(E_d(z₀)/E_d(H))/(H − z₀) [m⁻¹] and one standard error [m⁻¹];
+    E_d at both depths [-, per unit horizontal irradiance above the water]."""
+
+    K: float
+    K_error: float
+    E_d: tuple[float, float]
+    depths: tuple[float, float]
+
+
+#: Depth of the "just below the surface" meter of :func:`slab_kd` [m]: 20 ray offsets below the top face,
+#: where E_d differs from E_d(0⁻) by K z₀ ≤ 0.4 % even at K = 2 m⁻¹.
+NEAR_SURFACE_M = 0.002
+
+
+def slab_kd(a: float, b: float, phase: tuple[np.ndarray, np.ndarray], air_zeniths_deg, weights, depth: float,
+            n_water: float, spp: int = 16384, passes: int = 4, seed: int = 0) -> SlabKd:
+    """Monte Carlo K̄_d over [z₀, H] of a deep slab under a level water surface, lit by several beams.
+
+    The surface is a smooth dielectric of index ``n_water`` (Fresnel reflection and refraction of the
+    light coming in and internal reflection of the light going out, as a level sea). Beam k comes from
+    ``air_zeniths_deg[k]`` with horizontal irradiance ``weights[k]`` above the water (the sun and the
+    rings of a uniform sky, :func:`oceanrender.optics.jerlov_kd.surface_beams`). Per beam, Eq. (1) with
+    the basic radiance L/n² reciprocal across the interface (Case 1957) reads
+
+        E_d(z) = F cos θ_air · n² · L_air(−ω_s) / L_e                                      (2)
+
+    (for a clear slab: L_air = L_e (1 − F) e^{−c z/μ_w}/n², so E_d = F μ_air (1 − F) e^{−c z/μ_w}, the
+    refracted beam; tested). E_d is metered at z₀ = :data:`NEAR_SURFACE_M` and at H = ``depth`` [m].
+    """
+    import mitsuba as mi  # noqa: PLC0415
+
+    zeniths = np.atleast_1d(np.asarray(air_zeniths_deg, dtype=float))
+    weights = np.atleast_1d(np.asarray(weights, dtype=float))
+    if not (a > 0 and b >= 0 and depth > 10 * NEAR_SURFACE_M and passes >= 2 and zeniths.shape == weights.shape
+            and np.all((zeniths >= 0) & (zeniths <= 85)) and np.all(weights >= 0) and 1.0 < n_water < 2.0):
+        raise ValueError("slab_kd: need a > 0, b >= 0, depth > 0.02 m, passes >= 2, one weight >= 0 per zenith "
+                         "0-85 deg, 1 < n_water < 2")
+    width = _BAND_NM[1] - _BAND_NM[0]
+    bare = mi.load_dict(slab_scene(a, b, phase, 0.0, 1.0, True, spp, water=False))
+    L_e = float(np.array(mi.render(bare, seed=seed, spp=spp)).ravel()[0]) / width
+    depths = (NEAR_SURFACE_M, float(depth))
+    values = np.zeros((passes, 2))
+    for j, (zenith, weight) in enumerate(zip(zeniths, weights)):
+        for i, z in enumerate(depths):
+            scene = mi.load_dict(slab_scene(a, b, phase, float(zenith), z, True, spp, n_water=n_water))
+            for k in range(passes):
+                image = mi.render(scene, seed=seed + 7919 * k + 104729 * j + i, spp=spp)
+                values[k, i] += weight * n_water**2 * float(np.array(image).ravel()[0]) / width / L_e  # Eq. (2)
+    mean = values.mean(axis=0)
+    error = values.std(axis=0, ddof=1) / math.sqrt(passes)
+    thickness = depths[1] - depths[0]
+    K = math.log(mean[0] / mean[1]) / thickness
+    K_error = math.hypot(error[0] / mean[0], error[1] / mean[1]) / thickness
+    return SlabKd(K=K, K_error=K_error, E_d=(float(mean[0]), float(mean[1])), depths=depths)
