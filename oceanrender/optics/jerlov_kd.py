@@ -206,10 +206,11 @@ def kd_four_flux_fixed(a: ArrayLike, b: ArrayLike, b_w: ArrayLike, conditions: K
     """K̄_d [m⁻¹] of the four-flux model's fixed closure (μ_d = 0.83, μ_u = 0.40; before issue 19), with the
     phase function's b_b = b_w/2 + 0.0183 (b − b_w) (Petzold's average particle, Mobley 1994)."""
     from .fourflux import four_flux  # noqa: PLC0415
+    from .jerlov_types import PETZOLD_PARTICLE_BB_RATIO  # noqa: PLC0415
 
     a, b, b_w = (np.atleast_1d(np.asarray(v, dtype=float)) for v in (a, b, b_w))
     share = b_w if conditions.water_rayleigh else np.zeros_like(b)
-    bb = 0.5 * share + PETZOLD_BB_RATIO * (b - share)
+    bb = 0.5 * share + PETZOLD_PARTICLE_BB_RATIO * (b - share)
     _, sun, sky = _surface(conditions)
     out = np.empty(a.size)
     for i in range(a.size):
@@ -219,9 +220,6 @@ def kd_four_flux_fixed(a: ArrayLike, b: ArrayLike, b_w: ArrayLike, conditions: K
             layer_depth(float(a[i]), float(b[i]), conditions), float(a[i] + b[i]))
     return out
 
-
-#: b_b/b of Petzold's average particle (Mobley 1994, Table 3.10) [-].
-PETZOLD_BB_RATIO = 0.0183
 
 
 def surface_beams(conditions: KdConditions = KdConditions(), sky_nodes: int = 4) -> tuple[NDArray, NDArray]:
