@@ -13,7 +13,9 @@ Flat, frictionless bed, depth h [m] and velocity u [m s⁻¹] along x, gravity g
   test on which second order shows;
 * :func:`thacker_planar` — a planar free surface oscillating in a parabolic bowl,
   with moving shorelines on both sides (Thacker 1981 [5], as in SWASHES [3],
-  sect. 4.2.2): the smooth wet/dry test.
+  sect. 4.2.2): the smooth wet/dry test;
+* :func:`solitary_runup` — the maximum run-up of a non-breaking solitary wave on a
+  plane beach (Synolakis 1987 [6]), and :func:`solitary_wave` its initial state.
 
 All functions are pure and vectorised over x; t in s, positions in m. The bed is
 flat except for :func:`thacker_planar`, which brings its own bed.
@@ -33,6 +35,8 @@ References
    sect. 13.10 (simple waves of the shallow-water equations).
 .. [5] W. C. Thacker, "Some exact solutions to the nonlinear shallow-water wave
    equations", J. Fluid Mech. 107, 499–508, 1981, doi:10.1017/S0022112081001882.
+.. [6] C. E. Synolakis, "The runup of solitary waves", J. Fluid Mech. 185, 523–545, 1987,
+   doi:10.1017/S002211208700329X.
 """
 
 from __future__ import annotations
@@ -55,6 +59,8 @@ __all__ = [
     "simple_wave",
     "simple_wave_breaking_time",
     "thacker_planar",
+    "solitary_runup",
+    "solitary_wave",
 ]
 
 G: float = 9.81
@@ -450,3 +456,33 @@ def thacker_planar(
     h = np.maximum(0.0, h0 - (h0 / (a * a)) * (xi - centre) ** 2)
     u = np.where(h > 0.0, amplitude * math.sin(omega * t), 0.0)
     return bed, h, u
+
+
+def solitary_runup(height: float, depth: float, cot_beta: float) -> float:
+    """Maximum run-up R [m] of a non-breaking solitary wave of height H on a plane beach of slope 1/cot β.
+
+    Synolakis' (1987 [6]) run-up law, R/d = 2.831 √(cot β) (H/d)^{5/4}, from the linear shallow-water
+    theory, whose maximum run-up the nonlinear theory shares [6]; it agrees with his laboratory waves that
+    did not break (H/d up to about 0.044 on the 1:19.85 beach).
+    """
+    height = _check_positive("height", height)
+    depth = _check_positive("depth", depth)
+    cot_beta = _check_positive("cot_beta", cot_beta)
+    return 2.831 * math.sqrt(cot_beta) * (height / depth) ** 1.25 * depth
+
+
+def solitary_wave(x: ArrayLike, height: float, depth: float, cot_beta: float, g: float = G
+                  ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Surface elevation η [m] and velocity u [m s⁻¹] of Synolakis' (1987 [6]) initial solitary wave.
+
+    The beach's toe is at x = −X₀ = −d cot β (the still shoreline at x = 0, the beach rising towards +x);
+    the crest starts at x = −X₁, X₁ = X₀ + L with L = arccosh(√20)/γ, γ = √(3H/(4d)) / d, so that the
+    wave's front (where η = H/20) stands at the toe; η = H sech²(γ (x + X₁)), u = √(g/d) η (towards +x).
+    """
+    height = _check_positive("height", height)
+    depth = _check_positive("depth", depth)
+    cot_beta = _check_positive("cot_beta", cot_beta)
+    gamma = math.sqrt(3.0 * height / (4.0 * depth)) / depth
+    x1 = depth * cot_beta + math.acosh(math.sqrt(20.0)) / gamma
+    eta = height / np.cosh(gamma * (np.asarray(x, dtype=float) + x1)) ** 2
+    return eta, math.sqrt(g / depth) * eta

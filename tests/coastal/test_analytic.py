@@ -160,3 +160,23 @@ def test_thacker_planar_conserves_volume_and_solves_the_equations():
     centre = 2.0 - (0.5 / omega) * math.cos(omega * 0.4)
     assert wet.min() == pytest.approx(centre - 1.0, abs=2e-5) and wet.max() == pytest.approx(centre + 1.0, abs=2e-5)
     assert np.all(u[h == 0] == 0.0) and u[h > 0][0] == pytest.approx(0.5 * math.sin(omega * 0.4), rel=ROUNDOFF)
+
+
+def test_synolakis_solitary_wave_starts_with_its_front_at_the_beach_toe():
+    """Synolakis (1987): the crest at X₁ = X₀ + L from the shoreline so that η = H/20 at the toe X₀ = d cot β,
+    u = √(g/d) η; the run-up law grows as H^{5/4} and √(cot β)."""
+    import math
+
+    from oceanrender.coastal.analytic import solitary_runup, solitary_wave
+
+    H, d, cot = 0.0185, 1.0, 19.85
+    gamma = math.sqrt(3.0 * H / 4.0)
+    x1 = d * cot + math.acosh(math.sqrt(20.0)) / gamma
+    eta, u = solitary_wave(np.array([-x1, -d * cot]), H, d, cot)
+    assert eta[0] == pytest.approx(H, rel=1e-12)
+    assert eta[1] == pytest.approx(H / 20.0, rel=1e-9)  # the front at the toe
+    assert u[0] == pytest.approx(math.sqrt(9.81 / d) * H, rel=1e-12)
+    assert solitary_runup(2 * H, d, cot) / solitary_runup(H, d, cot) == pytest.approx(2**1.25, rel=1e-12)
+    assert solitary_runup(H, d, 4 * cot) / solitary_runup(H, d, cot) == pytest.approx(2.0, rel=1e-12)
+    with pytest.raises(ValueError, match="height"):
+        solitary_runup(-0.1, d, cot)
