@@ -105,6 +105,39 @@ BOUNDARIES = ("wall", "open")
 _GAUSS = 1.0 / math.sqrt(3.0)
 
 
+def check_numbers(settings, names: tuple[str, ...]) -> None:
+    """Refuse a setting among ``names`` that is not a finite number, naming it (ValueError)."""
+    for name in names:
+        value = getattr(settings, name)
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            raise ValueError(f"{name}: expected a finite number, got {value!r}")
+
+
+def differences(mean: NDArray, axis: int = -1) -> tuple[NDArray, NDArray]:
+    """(forward, backward) differences of the cell means along ``axis``; at each end the one neighbour's
+    difference on both sides."""
+    fwd = np.diff(mean, axis=axis, append=np.take(mean, [-1], axis=axis))
+    bwd = np.diff(mean, axis=axis, prepend=np.take(mean, [0], axis=axis))
+    first = [slice(None)] * mean.ndim
+    last = [slice(None)] * mean.ndim
+    first[axis], last[axis] = 0, -1
+    bwd[tuple(first)] = fwd[tuple(first)]
+    fwd[tuple(last)] = bwd[tuple(last)]
+    return fwd, bwd
+
+
+def minmod3(slope: NDArray, forward: NDArray, backward: NDArray, limiter: str, tvb_m: float, width: float,
+            exempt: NDArray | None = None) -> NDArray:
+    """minmod(a, b, c) (β = 1, [1]); for ``limiter="TVB"`` a is kept where |a| ≤ M Δ² [8] (Δ = ``width`` [m]),
+    only in the cells ``exempt`` when given."""
+    same = (np.sign(slope) == np.sign(forward)) & (np.sign(slope) == np.sign(backward))
+    limited = np.where(same, np.sign(slope) * np.minimum(np.abs(slope), np.minimum(np.abs(forward), np.abs(backward))), 0.0)
+    if limiter == "TVB":
+        keep = np.abs(slope) <= tvb_m * width**2
+        return np.where(keep if exempt is None else keep & exempt, slope, limited)
+    return limited
+
+
 @dataclass(frozen=True)
 class DGParams:
     """Settings of :class:`DGSolver1D`.
@@ -136,10 +169,7 @@ class DGParams:
     g: float = G
 
     def __post_init__(self) -> None:
-        for name in ("dx", "cfl", "tvb_m", "h_dry", "manning", "g"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                raise ValueError(f"{name}: expected a finite number, got {value!r}")
+        check_numbers(self, ("dx", "cfl", "tvb_m", "h_dry", "manning", "g"))
         if not (self.dx > 0 and self.h_dry > 0 and self.g > 0 and self.tvb_m >= 0 and self.manning >= 0):
             raise ValueError("dx, h_dry and g must be > 0; tvb_m and manning >= 0")
         if self.degree not in (0, 1) or isinstance(self.degree, bool):
@@ -299,10 +329,8 @@ class DGSolver1D:
         def to_fields(e, q):
             return (hi * e - q) / (hi - lo), (q - lo * e) / (hi - lo)
 
-        diff_f = lambda v: np.concatenate([v[1:] - v[:-1], [0.0]])  # noqa: E731
-        fwd_e, fwd_q = diff_f(eta0), diff_f(s.q0)
-        bwd_e, bwd_q = np.concatenate([[0.0], fwd_e[:-1]]), np.concatenate([[0.0], fwd_q[:-1]])
-        fwd_e[-1], fwd_q[-1], bwd_e[0], bwd_q[0] = bwd_e[-1], bwd_q[-1], fwd_e[0], fwd_q[0]
+        fwd_e, bwd_e = differences(eta0)
+        fwd_q, bwd_q = differences(s.q0)
         w1, w2 = to_fields(eta1, s.q1)
         f1, f2 = to_fields(fwd_e, fwd_q)
         b1, b2 = to_fields(bwd_e, bwd_q)
@@ -312,9 +340,10 @@ class DGSolver1D:
         inner = wet_faces.copy()
         inner[1:] &= wet_faces[:-1]
         inner[:-1] &= wet_faces[1:]
-        w1, w2 = self._minmod3(w1, f1, b1, inner), self._minmod3(w2, f2, b2, inner)
+        limit = lambda a, f, b, exempt=None: minmod3(a, f, b, p.limiter, p.tvb_m, p.dx, exempt)  # noqa: E731
+        w1, w2 = limit(w1, f1, b1, inner), limit(w2, f2, b2, inner)
         eta1_c, q1_c = w1 + w2, lo * w1 + hi * w2
-        eta1_dry, q1_dry = self._slope(eta0, eta1), self._slope(s.q0, s.q1)
+        eta1_dry, q1_dry = limit(eta1, fwd_e, bwd_e), limit(s.q1, fwd_q, bwd_q)  # dry cells: field by field
         s.h1 = np.where(wet, eta1_c, eta1_dry) - z1
         s.q1 = np.where(wet, q1_c, q1_dry)
         self._positive_and_dry(s)
@@ -335,25 +364,6 @@ class DGSolver1D:
         dry = s.h0 <= p.h_dry
         s.q0[dry] = 0.0
         s.q1[dry] = 0.0
-
-    def _minmod3(self, slope: NDArray, forward: NDArray, backward: NDArray, tvb: NDArray | None = None) -> NDArray:
-        """minmod(a, b, c) (β = 1), or its TVB form keeping a where |a| ≤ M Δx² [8] (only in the cells ``tvb``)."""
-        same = (np.sign(slope) == np.sign(forward)) & (np.sign(slope) == np.sign(backward))
-        limited = np.where(same, np.sign(slope) * np.minimum(np.abs(slope), np.minimum(np.abs(forward), np.abs(backward))), 0.0)
-        if self.params.limiter == "TVB":
-            keep = np.abs(slope) <= self.params.tvb_m * self.params.dx**2
-            return np.where(keep if tvb is None else keep & tvb, slope, limited)
-        return limited
-
-    def _slope(self, mean: NDArray, slope: NDArray) -> NDArray:
-        """minmod(U₁, Δ₊U₀, Δ₋U₀) (β = 1), or its TVB form, with one-sided differences at the ends."""
-        forward = np.empty_like(mean)
-        backward = np.empty_like(mean)
-        forward[:-1] = mean[1:] - mean[:-1]
-        backward[1:] = forward[:-1]
-        forward[-1] = backward[-1]  # one neighbour at each end: its difference on both sides
-        backward[0] = forward[0]
-        return self._minmod3(slope, forward, backward)
 
     def _friction(self, s: DGState, dt: float) -> None:
         p = self.params
@@ -410,7 +420,3 @@ class DGSolver1D:
             if not (np.all(np.isfinite(s.h0)) and np.all(np.isfinite(s.q0))):
                 raise FloatingPointError(f"DG state not finite at t = {s.t:.6g} s")
         return steps
-
-    def cell_means(self, s: DGState) -> tuple[NDArray, NDArray]:
-        """(h₀, q₀): the cell averages [m, m² s⁻¹]."""
-        return s.h0.copy(), s.q0.copy()

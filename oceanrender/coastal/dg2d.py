@@ -47,7 +47,7 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
-from .dg import BOUNDARIES, DG_LIMITERS
+from .dg import BOUNDARIES, DG_LIMITERS, check_numbers, differences, minmod3
 from .swe import G, _kinetic_flux
 
 __all__ = ["DG2DParams", "DGState2D", "DGSolver2D", "lake_at_rest_dg2d"]
@@ -74,10 +74,7 @@ class DG2DParams:
     g: float = G
 
     def __post_init__(self) -> None:
-        for name in ("dx", "dy", "cfl", "tvb_m", "h_dry", "g"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                raise ValueError(f"{name}: expected a finite number, got {value!r}")
+        check_numbers(self, ("dx", "dy", "cfl", "tvb_m", "h_dry", "g"))
         if not (self.dx > 0 and self.dy > 0 and self.h_dry > 0 and self.g > 0 and self.tvb_m >= 0):
             raise ValueError("dx, dy, h_dry and g must be > 0, tvb_m >= 0")
         if not 0 < self.cfl <= 1.0 / 3.0:
@@ -298,25 +295,6 @@ class DGSolver2D:
 
     # -- limiters ---------------------------------------------------------------------------------------
 
-    def _minmod3(self, a, b, c, dxy):
-        same = (np.sign(a) == np.sign(b)) & (np.sign(a) == np.sign(c))
-        limited = np.where(same, np.sign(a) * np.minimum(np.abs(a), np.minimum(np.abs(b), np.abs(c))), 0.0)
-        if self.params.limiter == "TVB":
-            return np.where(np.abs(a) <= self.params.tvb_m * dxy**2, a, limited)
-        return limited
-
-    @staticmethod
-    def _differences(mean: NDArray, axis: int) -> tuple[NDArray, NDArray]:
-        fwd = np.diff(mean, axis=axis, append=np.take(mean, [-1], axis=axis))
-        bwd = np.diff(mean, axis=axis, prepend=np.take(mean, [0], axis=axis))
-        # one neighbour at each end: its difference on both sides
-        first = [slice(None)] * mean.ndim
-        last = [slice(None)] * mean.ndim
-        first[axis], last[axis] = 0, -1
-        bwd[tuple(first)] = fwd[tuple(first)]
-        fwd[tuple(last)] = bwd[tuple(last)]
-        return fwd, bwd
-
     def _limit(self, s: DGState2D) -> None:
         p = self.params
         c = s.c
@@ -332,28 +310,23 @@ class DGSolver2D:
             un, ut = normal
             # characteristic variables of the direction: w = L (η, q_normal, q_transverse)
             qn_i, qt_i = (1, 2) if k == 1 else (2, 1)
+            # the differences of the means along this direction, once
+            diffs = [differences(v, axis) for v in (eta[0], c[qn_i, 0], c[qt_i, 0])]
             fields = []
-            for coef in ("slope", "fwd", "bwd"):
-                if coef == "slope":
-                    e, qn, qt = eta[k], c[qn_i, k], c[qt_i, k]
-                else:
-                    fe, be = self._differences(eta[0], axis)
-                    fn, bn = self._differences(c[qn_i, 0], axis)
-                    ft, bt = self._differences(c[qt_i, 0], axis)
-                    e, qn, qt = (fe, fn, ft) if coef == "fwd" else (be, bn, bt)
+            for e, qn, qt in ((eta[k], c[qn_i, k], c[qt_i, k]), tuple(d[0] for d in diffs), tuple(d[1] for d in diffs)):
                 w1 = ((un + cel) * e - qn) / (2.0 * cel)
                 w2 = qt - ut * e
                 w3 = (qn - (un - cel) * e) / (2.0 * cel)
                 fields.append((w1, w2, w3))
-            lim = [self._minmod3(fields[0][i], fields[1][i], fields[2][i], dxy) for i in range(3)]
+            limit = lambda a, f, b: minmod3(a, f, b, p.limiter, p.tvb_m, dxy)  # noqa: E731
+            lim = [limit(fields[0][i], fields[1][i], fields[2][i]) for i in range(3)]
             e_new = lim[0] + lim[2]
             qn_new = (un - cel) * lim[0] + (un + cel) * lim[2]
             qt_new = ut * lim[0] + lim[1] + ut * lim[2]
-            # dry cells: componentwise
-            e_dry = self._minmod3(eta[k], *self._differences(eta[0], axis), dxy)
-            c[0, k] = np.where(wet, e_new, e_dry) - zb[k]
-            c[qn_i, k] = np.where(wet, qn_new, self._minmod3(c[qn_i, k], *self._differences(c[qn_i, 0], axis), dxy))
-            c[qt_i, k] = np.where(wet, qt_new, self._minmod3(c[qt_i, k], *self._differences(c[qt_i, 0], axis), dxy))
+            # dry cells: field by field
+            c[0, k] = np.where(wet, e_new, limit(eta[k], *diffs[0])) - zb[k]
+            c[qn_i, k] = np.where(wet, qn_new, limit(c[qn_i, k], *diffs[1]))
+            c[qt_i, k] = np.where(wet, qt_new, limit(c[qt_i, k], *diffs[2]))
         # positivity at the eight face points (Zhang & Shu, as Xing, Zhang & Shu 2010)
         negative = c[0, 0] < 0.0
         if negative.any():

@@ -24,7 +24,7 @@ from numpy.typing import NDArray
 
 from ..optics.foam import foam_spectral_factor_Frouin1996
 from ..optics.report import REPORT_WAVELENGTHS
-from ..optics.scene_water import water_ior
+from ..optics.scene_water import scene_iops, water_ior  # scene_iops: the water as `oceanrender optics` has it
 from ..optics.seafloor import linear_reflectance
 from ..render.scene import sun_direction
 from ..scene import Scene
@@ -189,15 +189,6 @@ class LutSet:
     def rgb(self, key: str) -> NDArray[np.float64]:
         """A colour constant as an array (3,)."""
         return np.asarray(self.constants[key], dtype=np.float64)
-
-
-def scene_iops(scene: Scene, wavelengths: NDArray) -> tuple[NDArray, NDArray, NDArray]:
-    """a, b, b_b [m⁻¹] of the scene's water at ``wavelengths`` [nm], as ``oceanrender optics`` computes them
-    (:func:`oceanrender.optics.scene_water.scene_iops`: a Jerlov type, the ``[composition]``, or pure sea
-    water at the scene's temperature and salinity)."""
-    from ..optics.scene_water import scene_iops as iops_of_scene  # noqa: PLC0415
-
-    return iops_of_scene(scene, wavelengths)
 
 
 def measure_scene_light(scene: Scene, settings: BakeSettings, white_XYZ: NDArray | None = None) -> SceneLight:
