@@ -6,14 +6,17 @@ flat frictionless bed, open ends):
 * ``oceanrender.coastal.dg`` at degree 1 (RKDG P1, minmod and TVB) and degree 0 (the first-order kinetic
   FVS scheme of the same code: the dissertation's "first order");
 * the project's finite-volume solver (``coastal.swe``, numba) on a 3-row channel: first order, the
-  second-order "kinetic" (MUSCL + Heun) and "kinetic split" (MUSCL–Hancock) schemes.
+  second-order "kinetic" (MUSCL + Heun) and "kinetic split" (MUSCL–Hancock) schemes;
+* PyClaw's classic second-order solver (clawpack 5.14, Fortran; MC limiter) on the same channel, when it
+  imports: run this under ``.venv-bench`` (``scripts/bench_swe_env.sh``), which has it and the project.
 
 Printed per scheme and grid: L1 of h [m²], steps, wall time (best of ``--repeats``) and the cost per
 cell-update [ns] (wall time / (steps × cells); a DG cell-update is two stages of two coefficients each).
 Then the time to reach ``--target`` L1 on Stoker, log-log interpolated between the two grids that bracket it;
 for the 3-row finite-volume channel also per row, the 1D-equivalent. Writes ``benchmarks/results/bench_dg.md``.
 
-Usage: ``.venv/bin/python benchmarks/bench_dg.py [--repeats 2] [--target 0.005]`` (~1 min on 2 cores).
+Usage: ``.venv-bench/bin/python benchmarks/bench_dg.py [--repeats 2] [--target 0.005]`` (~1 min on 2 cores;
+``.venv/bin/python`` leaves the PyClaw rows out).
 """
 
 from __future__ import annotations
@@ -72,6 +75,53 @@ def run_fv(n: int, order: int, scheme: str):
     return elapsed, solver.cell_updates // (ROWS * n), ROWS * n, state.h[1]
 
 
+def run_pyclaw(n: int):
+    """PyClaw's classic solver, order 2 (Lax–Wendroff with the MC limiter, dimensionally split, its default
+    CFL control; Roe with entropy fix) on the same 3-row channel, open (extrapolating) ends."""
+    import tempfile
+
+    from clawpack import pyclaw, riemann  # in .venv-bench only (scripts/bench_swe_env.sh)
+
+    dx = LENGTH / n
+    here = os.getcwd()
+    with tempfile.TemporaryDirectory(prefix="bench_dg_pyclaw_") as scratch:
+        os.chdir(scratch)  # NOTE: importing and running pyclaw writes pyclaw.log in the working directory
+        try:
+            solver = pyclaw.ClawSolver2D(riemann.shallow_roe_with_efix_2D)
+            solver.order = 2
+            solver.limiters = pyclaw.limiters.tvd.MC
+            solver.dimensional_split = True
+            solver.bc_lower = [pyclaw.BC.extrap, pyclaw.BC.wall]
+            solver.bc_upper = [pyclaw.BC.extrap, pyclaw.BC.wall]
+            solver.dt_initial = 0.1 * dx / (3.0 * math.sqrt(9.81 * H_LEFT))
+            solver.max_steps = 100000
+            solver.verbosity = 0
+            domain = pyclaw.Domain([pyclaw.Dimension(0.0, LENGTH, n, name="x"),
+                                    pyclaw.Dimension(0.0, ROWS * dx, ROWS, name="y")])
+            state = pyclaw.State(domain, 3)
+            state.problem_data.update(grav=9.81, dry_tolerance=1e-3, sea_level=0.0)
+            x_c, _ = state.grid.p_centers
+            state.q[0] = np.where(x_c < X0, H_LEFT, H_RIGHT)
+            state.q[1] = 0.0
+            state.q[2] = 0.0
+            solution = pyclaw.Solution(state, domain)
+            solver.setup(solution)
+            start = time.perf_counter()
+            solver.evolve_to_time(solution, T_END)
+            elapsed = time.perf_counter() - start
+        finally:
+            os.chdir(here)
+    return elapsed, int(solver.status["numsteps"]), ROWS * n, solution.state.q[0][:, 1].copy()
+
+
+def pyclaw_available() -> bool:
+    try:
+        import clawpack.pyclaw  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
 SCHEMES = {
     "DG P1, minmod (the dissertation's)": (lambda n: run_dg(n, 1, "minmod"), (100, 200, 400, 800, 1600), 1),
     "DG P1, TVB": (lambda n: run_dg(n, 1, "TVB"), (100, 200, 400, 800, 1600), 1),
@@ -79,6 +129,7 @@ SCHEMES = {
     "FV first order (swe, 3 rows)": (lambda n: run_fv(n, 1, "kinetic"), (400, 800, 1600, 3200, 6400), ROWS),
     "FV kinetic MUSCL + Heun (swe, 3 rows)": (lambda n: run_fv(n, 2, "kinetic"), (100, 200, 400, 800, 1600), ROWS),
     "FV MUSCL-Hancock, kinetic split (swe, 3 rows)": (lambda n: run_fv(n, 2, "kinetic split"), (100, 200, 400, 800, 1600), ROWS),
+    "PyClaw order 2, MC (3 rows)": (run_pyclaw, (100, 200, 400, 800, 1600), ROWS),
 }
 
 
@@ -101,6 +152,10 @@ def main() -> int:
              "| scheme | cells | L1 of h [m²] | steps | wall [s] | ns per cell-update |", "|---|---:|---:|---:|---:|---:|"]
     summary = {}
     for name, (run, grids, rows) in SCHEMES.items():
+        if run is run_pyclaw and not pyclaw_available():
+            lines.append(f"| {name} | — | not installed (run under .venv-bench: scripts/bench_swe_env.sh) | | | |")
+            print(lines[-1], flush=True)
+            continue
         run(grids[0])  # compile (numba) and warm up
         rows_out = []
         for n in grids:

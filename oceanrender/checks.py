@@ -42,6 +42,9 @@ BYTES_PER_FFT_POINT = 204.0
 BYTES_PER_MESH_VERTEX = 960.0
 #: Peak bytes per shallow-water cell (state, fluxes, ghosts, work arrays), measured.
 BYTES_PER_COASTAL_CELL = 74.0
+#: The same for ``scheme = "dg"`` (nine P1 coefficients and numpy's temporaries per stage), measured as the
+#: growth of peak RSS from 300² to 600² cells (docs/coastal.md).
+BYTES_PER_DG_CELL = 1040.0
 #: Peak bytes per pixel of a frame: Mitsuba's film, XYZ, the vision model, EXR and PNG buffers, measured.
 #: (Samples cost none: the split integrator's paths are loops inside one drjit kernel, measured too.)
 BYTES_PER_PIXEL = 220.0
@@ -100,7 +103,10 @@ def memory_estimate(scene: Scene, renders: bool = True) -> list[MemoryItem]:
                                 f"cascade(s)", points * BYTES_PER_FFT_POINT))
     if scene.coastal is not None:
         cells = scene.coastal.cells[0] * scene.coastal.cells[1]
-        items.append(MemoryItem("[coastal] cells", f"shallow water: {cells} cells", cells * BYTES_PER_COASTAL_CELL))
+        dg = scene.coastal.scheme == "dg"
+        per_cell = BYTES_PER_DG_CELL if dg else BYTES_PER_COASTAL_CELL
+        items.append(MemoryItem("[coastal] cells", f"shallow water{' (DG P1)' if dg else ''}: {cells} cells",
+                                cells * per_cell))
     key = "[coastal] cells" if scene.coastal is not None and scene.coastal.waves != "open sea" else (
         "[mesh] segments" if scene.mesh.kind == "radial" else "[ocean] resolution")
     vertices = mesh_vertices(scene)

@@ -14,11 +14,13 @@ Flat, frictionless bed, depth h [m] and velocity u [m s⁻¹] along x, gravity g
 * :func:`thacker_planar` — a planar free surface oscillating in a parabolic bowl,
   with moving shorelines on both sides (Thacker 1981 [5], as in SWASHES [3],
   sect. 4.2.2): the smooth wet/dry test;
+* :func:`thacker_paraboloid` — its two-dimensional form: a tilted plane of water
+  circling in a paraboloid of revolution (Thacker 1981 [5]; SWASHES [3], sect. 4.2.2);
 * :func:`solitary_runup` — the maximum run-up of a non-breaking solitary wave on a
   plane beach (Synolakis 1987 [6]), and :func:`solitary_wave` its initial state.
 
 All functions are pure and vectorised over x; t in s, positions in m. The bed is
-flat except for :func:`thacker_planar`, which brings its own bed.
+flat except for the Thacker solutions, which bring their own beds.
 
 References
 ----------
@@ -59,6 +61,7 @@ __all__ = [
     "simple_wave",
     "simple_wave_breaking_time",
     "thacker_planar",
+    "thacker_paraboloid",
     "solitary_runup",
     "solitary_wave",
 ]
@@ -456,6 +459,61 @@ def thacker_planar(
     h = np.maximum(0.0, h0 - (h0 / (a * a)) * (xi - centre) ** 2)
     u = np.where(h > 0.0, amplitude * math.sin(omega * t), 0.0)
     return bed, h, u
+
+
+def thacker_paraboloid(
+    x: ArrayLike, y: ArrayLike, t: float, h0: float, a: float, eta: float,
+    x_c: float = 0.0, y_c: float = 0.0, g: float = G,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Thacker's planar surface circling in a paraboloid of revolution: a moving shoreline in 2D.
+
+    Parameters
+    ----------
+    x, y : array_like
+        Positions [m] (broadcast together).
+    t : float
+        Time [s].
+    h0 : float
+        Depth at the centre when the water is level [m], > 0.
+    a : float
+        Radius of the bowl's rim at the still level [m], > 0: z_b = −h0 (1 − r²/a²).
+    eta : float
+        Radius of the circle the wet disc's centre runs on [m], ≥ 0 and < a.
+    x_c, y_c : float, optional
+        Centre of the bowl [m].
+    g : float, optional
+        Gravitational acceleration [m s⁻²].
+
+    Returns
+    -------
+    bed, h, u, v : ndarray
+        Bed [m], depth [m] (0 on dry ground), velocities [m s⁻¹] (0 on dry ground).
+
+    Notes
+    -----
+    With X = x − x_c, Y = y − y_c and ω = √(2 g h0)/a (Thacker 1981 [5], Sect. 4;
+    SWASHES [3], sect. 4.2.2, "planar surface in a paraboloid")::
+
+        η_s = (eta h0/a²) (2 X cos ωt + 2 Y sin ωt − eta),   h = max(0, η_s − z_b),
+        u = −eta ω sin ωt,   v = eta ω cos ωt,
+
+    so the wet region is the disc of radius a about eta (cos ωt, sin ωt), which moves
+    with the water's uniform velocity; h has a kink along the whole circle.
+    """
+    X = np.asarray(x, dtype=np.float64) - x_c
+    Y = np.asarray(y, dtype=np.float64) - y_c
+    h0 = _check_positive("h0", h0)
+    a = _check_positive("a", a)
+    if not (math.isfinite(eta) and 0.0 <= eta < a):
+        raise ValueError(f"eta must be finite, >= 0 and < a = {a}; got {eta}")
+    omega = math.sqrt(2.0 * g * h0) / a
+    bed = -h0 * (1.0 - (X * X + Y * Y) / (a * a))
+    surface = (eta * h0 / (a * a)) * (2.0 * X * math.cos(omega * t) + 2.0 * Y * math.sin(omega * t) - eta)
+    h = np.maximum(0.0, surface - bed)
+    wet = h > 0.0
+    u = np.where(wet, -eta * omega * math.sin(omega * t), 0.0)
+    v = np.where(wet, eta * omega * math.cos(omega * t), 0.0)
+    return bed, h, u, v
 
 
 def solitary_runup(height: float, depth: float, cot_beta: float) -> float:

@@ -56,7 +56,12 @@ from ..io.frames import write_exr as write_exr_file
 from ..io.paths import remove_stale_temporaries
 from ..scene import arrays
 from . import inputs
-from .swe import ShallowWaterSolver, SolverParams, State
+from .dg2d import DG2DParams
+from .dg_coast import DGCoastSolver, P1State, corners_from_centres, p1_initial_state
+from .swe import H_FLOOR, ShallowWaterSolver, SolverParams, State
+
+#: TVB constant M of ``limiter = "TVB"`` when the scene gives no ``tvb_m`` (:mod:`.dg`) [m⁻¹].
+TVB_M = 50.0
 
 #: Format version of the stored fields. 2: the canonical stop schedule (:func:`stop_times`);
 #: stores of version 1 stopped elsewhere, so their fields differ and are recomputed.
@@ -118,10 +123,15 @@ def checkpoint_due(previous: float, tau: float, interval: float) -> bool:
     return int((tau + SAME_STOP_S) // interval) > int((previous + SAME_STOP_S) // interval)
 
 
-def solver_for_scene(scene) -> tuple[ShallowWaterSolver, np.ndarray, State]:
-    """(solver, bed z_b [m], initial state at τ = 0) of the scene's [coastal] section."""
+def solver_for_scene(scene) -> tuple[ShallowWaterSolver | DGCoastSolver, np.ndarray, State]:
+    """(solver, bed z_b [m], initial state at τ = 0) of the scene's [coastal] section.
+
+    With ``scheme = "dg"`` the solver is :class:`.dg_coast.DGCoastSolver`, the bed its P1
+    bed's cell means and the state a :class:`.dg_coast.P1State`."""
     coastal = scene.coastal
     dx, dy = coastal.spacing
+    if coastal.scheme == "dg":
+        return _dg_solver_for_scene(scene)
     params = SolverParams(dx=dx, dy=dy, order=coastal.order, cfl=coastal.cfl, h_min=coastal.h_min,
                           limiter=coastal.limiter, scheme=coastal.scheme,
                           manning=coastal.manning, boundaries=inputs.boundaries(coastal, scene.ocean))
@@ -130,6 +140,24 @@ def solver_for_scene(scene) -> tuple[ShallowWaterSolver, np.ndarray, State]:
     hu, hv = arrays.initial_discharges(coastal, h)
     state = State(h=h, hu=hu, hv=hv, t=0.0)
     return ShallowWaterSolver(bed, params), bed, state
+
+
+def _dg_solver_for_scene(scene) -> tuple[DGCoastSolver, np.ndarray, P1State]:
+    """:func:`solver_for_scene` for ``scheme = "dg"``."""
+    coastal = scene.coastal
+    dx, dy = coastal.spacing
+    corners = corners_from_centres(arrays.bathymetry(coastal))
+    params = DG2DParams(dx=dx, dy=dy, cfl=coastal.cfl, limiter=coastal.limiter, tvb_m=coastal.tvb_m or TVB_M,
+                        h_dry=max(coastal.h_min, H_FLOOR), manning=coastal.manning,
+                        boundaries=inputs.boundaries(coastal, scene.ocean))
+    solver = DGCoastSolver(corners, params)
+    if coastal.initial_surface == "still":
+        surface = coastal.still_level
+    else:  # the file's surface per cell
+        surface = arrays.initial_surface(coastal)
+    u, v = arrays.initial_velocities(coastal)
+    state = p1_initial_state(corners, surface, u, v, params.h_dry)
+    return solver, solver.bed, state
 
 
 def settings_digest(scene) -> str:
@@ -214,7 +242,8 @@ def _resume_state(checkpoint: Path, schedule: list[tuple[float, int | None]], ta
             t = float(data["t"])
             if t > tau_first or t not in {tau for tau, _ in schedule}:
                 return None
-            state = State(h=data["h"].copy(), hu=data["hu"].copy(), hv=data["hv"].copy(), t=t)
+            fields = dict(h=data["h"].copy(), hu=data["hu"].copy(), hv=data["hv"].copy(), t=t)
+            state = P1State(**fields, slopes=data["slopes"].copy()) if "slopes" in data.files else State(**fields)
     except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
         return None
     return state if state.h.shape == shape else None
@@ -302,7 +331,8 @@ def run_simulation(scene, store: str | Path, frames: tuple[int, int] | None = No
                 write_frame_exr(frame_exr_path(store, frame), scene, frame, state.h, state.hu, state.hv, bed)
             report.simulated.append(frame)
         if checkpoint_due(previous, tau, coastal.checkpoint_interval) or tau == tau_end:
-            _atomic_save_npz(checkpoint, h=state.h, hu=state.hu, hv=state.hv, t=state.t)
+            extra = {"slopes": state.slopes} if isinstance(state, P1State) else {}
+            _atomic_save_npz(checkpoint, h=state.h, hu=state.hu, hv=state.hv, t=state.t, **extra)
         previous = tau
         if on_progress:
             on_progress(state.t, tau_end)

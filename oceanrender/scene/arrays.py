@@ -154,31 +154,41 @@ def bathymetry(coastal) -> NDArray[np.float64]:
     return check_array(read_array(coastal.bathymetry, coastal.shape), coastal.shape)
 
 
-def initial_depth(coastal, bed: NDArray) -> NDArray[np.float64]:
-    """Initial water depth h = max(η₀ − z_b, 0) [m]; η₀ the still level or the file's surface."""
+def initial_surface(coastal) -> NDArray[np.float64]:
+    """Initial surface elevation η₀ (ny, nx) [m]: the still level, or the file's surface."""
     if coastal.initial_surface == "still":
-        eta = np.full(bed.shape, coastal.still_level)
-    else:
-        eta = check_array(read_array(coastal.initial_surface, coastal.shape), coastal.shape)
-    return np.maximum(eta - bed, 0.0)
+        return np.full(coastal.shape, float(coastal.still_level))
+    return check_array(read_array(coastal.initial_surface, coastal.shape), coastal.shape)
+
+
+def initial_depth(coastal, bed: NDArray) -> NDArray[np.float64]:
+    """Initial water depth h = max(η₀ − z_b, 0) [m] (:func:`initial_surface`)."""
+    return np.maximum(initial_surface(coastal) - bed, 0.0)
+
+
+def initial_velocities(coastal) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Initial velocities (u, v) [m s⁻¹] along the grid's axes from ``initial_u``/``initial_v``: a uniform
+    value or an array file (ny, nx) each."""
+    out = []
+    for key in ("initial_u", "initial_v"):
+        value = getattr(coastal, key)
+        if isinstance(value, str):
+            out.append(check_array(read_array(value, coastal.shape), coastal.shape))
+        else:
+            out.append(np.full(coastal.shape, float(value)))
+    return out[0], out[1]
 
 
 def initial_discharges(coastal, depth: NDArray) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Initial discharges (hu, hv) [m² s⁻¹] from ``initial_u``/``initial_v`` [m s⁻¹] and the depth h [m].
 
     Each velocity is a uniform value or an array file (ny, nx) along the grid's
-    axes; cells with h ≤ ``h_min`` (land) get none, as the solver requires.
+    axes (:func:`initial_velocities`); cells with h ≤ ``h_min`` (land) get none,
+    as the solver requires.
     """
     wet = np.asarray(depth) > coastal.h_min
-    out = []
-    for key in ("initial_u", "initial_v"):
-        value = getattr(coastal, key)
-        if isinstance(value, str):
-            velocity = check_array(read_array(value, coastal.shape), coastal.shape)
-        else:
-            velocity = np.full(coastal.shape, float(value))
-        out.append(np.where(wet, velocity * depth, 0.0))
-    return out[0], out[1]
+    u, v = initial_velocities(coastal)
+    return np.where(wet, u * depth, 0.0), np.where(wet, v * depth, 0.0)
 
 
 def offshore_depth(coastal, bed: NDArray) -> float:

@@ -854,14 +854,19 @@ class CoastalSettings(_Section):
     offshore_side: Literal["north", "south", "east", "west"] = Field("north", description="side the waves enter")
     lateral: Literal["wall", "transmissive"] = Field("transmissive", description="the two sides beside the offshore one")
     order: Literal[1, 2] = Field(2, description="1: first-order scheme; 2: second order")
-    scheme: Literal["kinetic", "HLL split", "kinetic split"] = Field(
+    scheme: Literal["kinetic", "HLL split", "kinetic split", "dg"] = Field(
         "kinetic", description="'kinetic': the unsplit kinetic scheme; 'HLL split' (order 2): HLLE flux in "
                                "Strang-split sweeps; 'kinetic split': kinetic flux in Strang-split sweeps, "
-                               "MUSCL-Hancock at order 2, cfl up to 1 (docs/coastal.md)")
-    limiter: Literal["MC", "van Leer", "minmod"] = Field(
-        "MC", description="(order 2) slope limiter; the dissertation's is minmod, MC halves the error here")
+                               "MUSCL-Hancock at order 2, cfl up to 1; 'dg' (order 2): the dissertation's "
+                               "discontinuous Galerkin P1 with the kinetic flux, cfl up to 1/3 (docs/coastal.md)")
+    limiter: Literal["MC", "van Leer", "minmod", "TVB"] = Field(
+        "MC", description="(order 2) slope limiter; the dissertation's is minmod, MC halves the error here; "
+                          "scheme 'dg' takes 'minmod' or 'TVB' (minmod kept where a slope is below "
+                          "tvb_m · cell²: smooth extrema are not clipped)")
+    tvb_m: float | None = Field(None, ge=0, le=1e6, description="(scheme 'dg', limiter 'TVB') the TVB constant M "
+                                                               "[m⁻¹]; 50 when left out")
     cfl: float = Field(0.4, gt=0, le=1, description="Courant number [-]; ≤ 1 at first order, ≤ 0.5 at second "
-                                                     "(≤ 1 with scheme 'kinetic split')")
+                                                     "(≤ 1 with scheme 'kinetic split', ≤ 1/3 with 'dg')")
     h_min: float = Field(0.002, ge=0, le=1, description="dry threshold: cells with depth ≤ h_min are land [m]")
     manning: float = Field(0.02, ge=0, le=1, description="Manning friction coefficient [s m^-1/3]")
     spinup: float = Field(20.0, ge=0, le=1e5, description="simulated time before frame 0 [s]")
@@ -873,9 +878,42 @@ class CoastalSettings(_Section):
     rock_cover: float = Field(0.15, ge=0, le=1, description="fraction of the seafloor that is rock [-]")
     seed: int = Field(3, ge=0, le=SEED_MAX, description="seed of the rock pattern and of the spectral wave phases")
 
+    @field_validator("scheme")
+    @classmethod
+    def _dg_order(cls, value: str, info) -> str:
+        if value == "dg" and info.data.get("order") != 2:
+            raise ValueError(f"'dg' is the P1 (second-order) scheme: it needs order = 2, got order = "
+                             f"{info.data.get('order')} with scheme 'dg'")
+        return value
+
+    @field_validator("limiter")
+    @classmethod
+    def _limiter_of_scheme(cls, value: str, info) -> str:
+        dg = info.data.get("scheme") == "dg"
+        if dg and value not in ("minmod", "TVB"):
+            raise ValueError(f"scheme 'dg' takes limiter 'minmod' or 'TVB', got {quoted(value)}")
+        if not dg and value == "TVB":
+            raise ValueError(f"'TVB' is a limiter of scheme 'dg' only (the finite-volume schemes take 'MC', "
+                             f"'van Leer' or 'minmod'), got {quoted(value)} with scheme "
+                             f"{quoted(info.data.get('scheme'))}")
+        return value
+
+    @field_validator("tvb_m")
+    @classmethod
+    def _tvb_only(cls, value: float | None, info) -> float | None:
+        if value is not None and info.data.get("limiter") != "TVB":
+            raise ValueError(f"is used by limiter 'TVB' only (scheme 'dg'), got tvb_m = {value} with limiter "
+                             f"{quoted(info.data.get('limiter'))}")
+        if value is not None and not math.isfinite(value):
+            raise ValueError(f"expected a finite TVB constant >= 0 [1/m], got {value}")
+        return value
+
     @field_validator("cfl")
     @classmethod
     def _cfl_bound(cls, value: float, info) -> float:
+        if info.data.get("scheme") == "dg" and value > 1.0 / 3.0:
+            raise ValueError(f"must be ≤ 1/3 with scheme 'dg' (P1 with two-stage Runge-Kutta: the stability and "
+                             f"positivity bound), got {value}")
         if info.data.get("order") == 2 and info.data.get("scheme") != "kinetic split" and value > 0.5:
             raise ValueError(f"must be ≤ 0.5 at order 2 with scheme {info.data.get('scheme')!r} (the scheme's "
                              f"positivity bound; 'kinetic split' allows ≤ 1), got {value}")

@@ -13,6 +13,7 @@ from oceanrender.coastal.analytic import (
     simple_wave,
     simple_wave_breaking_time,
     stoker_middle_state,
+    thacker_paraboloid,
     thacker_planar,
     wall_reflection,
 )
@@ -160,6 +161,41 @@ def test_thacker_planar_conserves_volume_and_solves_the_equations():
     centre = 2.0 - (0.5 / omega) * math.cos(omega * 0.4)
     assert wet.min() == pytest.approx(centre - 1.0, abs=2e-5) and wet.max() == pytest.approx(centre + 1.0, abs=2e-5)
     assert np.all(u[h == 0] == 0.0) and u[h > 0][0] == pytest.approx(0.5 * math.sin(omega * 0.4), rel=ROUNDOFF)
+
+
+def test_thacker_paraboloid_solves_the_2d_equations_with_a_circling_wet_disc():
+    """Thacker's 2D planar surface: the residuals of the 2D equations (centred differences, step 1e-5; the
+    velocity is uniform, so ∂x(hu) = u ∂x h) vanish on the wet part, the volume is that of the paraboloid's
+    still water (π h0 a²/2) at every time, and the wet disc of radius a circles the centre at radius eta."""
+    params = dict(h0=0.1, a=1.0, eta=0.5, x_c=2.0, y_c=2.0)
+    omega = math.sqrt(2.0 * G * 0.1)
+    grid = np.linspace(0.0, 4.0, 2001)
+    X, Y = np.meshgrid(grid, grid)
+    cell = (grid[1] - grid[0]) ** 2
+    xs, ys = np.meshgrid(np.linspace(1.9, 2.1, 11), np.linspace(1.9, 2.1, 11))  # wet at all times (|r| < a − eta)
+    e = 1e-5
+    for t in (0.0, 0.6, 1.7):
+        _, h, _, _ = thacker_paraboloid(X, Y, t, **params)
+        # a midpoint sum over a kinked profile: relative to the volume, 1e-4 at this grid
+        assert h.sum() * cell == pytest.approx(math.pi * 0.1 * 1.0 / 2.0, rel=1e-4)
+        wet = h > 0
+        centre = (0.5 * math.cos(omega * t), 0.5 * math.sin(omega * t))
+        assert X[wet].mean() - 2.0 == pytest.approx(centre[0], abs=1e-3)
+        assert Y[wet].mean() - 2.0 == pytest.approx(centre[1], abs=1e-3)
+        f = lambda dx=0.0, dy=0.0, dt=0.0: thacker_paraboloid(xs + dx, ys + dy, t + dt, **params)  # noqa: E731
+        bed, h, u, v = f()
+        ht = (f(dt=e)[1] - f(dt=-e)[1]) / (2 * e)
+        hx = (f(dx=e)[1] - f(dx=-e)[1]) / (2 * e)
+        hy = (f(dy=e)[1] - f(dy=-e)[1]) / (2 * e)
+        ex = ((f(dx=e)[0] + f(dx=e)[1]) - (f(dx=-e)[0] + f(dx=-e)[1])) / (2 * e)
+        ey = ((f(dy=e)[0] + f(dy=e)[1]) - (f(dy=-e)[0] + f(dy=-e)[1])) / (2 * e)
+        ut = (f(dt=e)[2] - f(dt=-e)[2]) / (2 * e)
+        vt = (f(dt=e)[3] - f(dt=-e)[3]) / (2 * e)
+        # finite differences of O(1) fields with step 1e-5: truncation ~1e-10, round-off ~1e-11
+        assert np.abs(ht + u * hx + v * hy).max() < 1e-6
+        assert np.abs(ut + G * ex).max() < 1e-5 and np.abs(vt + G * ey).max() < 1e-5
+    with pytest.raises(ValueError, match="eta"):
+        thacker_paraboloid(0.0, 0.0, 0.0, h0=0.1, a=1.0, eta=1.0)
 
 
 def test_synolakis_solitary_wave_starts_with_its_front_at_the_beach_toe():

@@ -323,6 +323,29 @@ def test_the_second_order_courant_bound_follows_the_scheme(scheme, cfl, accepted
         assert "cfl" in str(error.value) and "\n" not in str(error.value)
 
 
+@pytest.mark.parametrize("coastal, key", [
+    ({"scheme": "dg", "order": 1, "limiter": "minmod", "cfl": 0.3}, "[coastal] scheme"),  # P1 is second order
+    ({"scheme": "dg", "limiter": "MC", "cfl": 0.3}, "[coastal] limiter"),  # DG takes minmod or TVB
+    ({"scheme": "kinetic", "limiter": "TVB"}, "[coastal] limiter"),  # TVB is DG's
+    ({"scheme": "dg", "limiter": "minmod", "cfl": 0.4}, "[coastal] cfl"),  # ν ≤ 1/3 for P1 with RK2
+    ({"scheme": "dg", "limiter": "minmod", "tvb_m": 20.0, "cfl": 0.3}, "[coastal] tvb_m"),  # unused without TVB
+    ({"scheme": "dg", "limiter": "TVB", "tvb_m": -1.0, "cfl": 0.3}, "[coastal] tvb_m"),
+    ({"scheme": "dgx", "limiter": "minmod"}, "[coastal] scheme"),
+])
+def test_a_dg_scheme_with_settings_it_cannot_use_is_refused_naming_the_key(coastal, key):
+    with pytest.raises(SceneError) as error:
+        scene_from_dict({"name": "t", "coastal": {"order": 2, **coastal}}, "t.toml")
+    message = str(error.value)
+    assert message.startswith("t.toml: ") and key in message and "\n" not in message
+
+
+def test_a_dg_scheme_is_accepted_with_its_limiters():
+    for limiter, extra in (("minmod", {}), ("TVB", {}), ("TVB", {"tvb_m": 10.0})):
+        coastal = scene_from_dict({"name": "t", "coastal": {"scheme": "dg", "limiter": limiter, "cfl": 1 / 3,
+                                                            **extra}}).coastal
+        assert coastal.scheme == "dg" and coastal.limiter == limiter and coastal.tvb_m == extra.get("tvb_m")
+
+
 def _object_scene(tmp_path, entry: str, extra: str = "") -> Path:
     import trimesh
 
