@@ -77,7 +77,9 @@ _SIDES = ("west", "east", "south", "north")
 @dataclass(frozen=True)
 class DG2DParams:
     """Settings of :class:`DGSolver2D` (units and meanings as :class:`.dg.DGParams`); ``cfl`` is the Courant
-    number of Δt = ν / max((|u| + a)/Δx + (|v| + a)/Δy), ν ≤ 1/3."""
+    number of Δt = ν / max((|u| + a)/Δx + (|v| + a)/Δy), ν ≤ 1/3. The sides: ``boundaries`` (a
+    :class:`.boundaries.Boundaries`: walls, transmissive, incident waves) when given, else the strings
+    ``west`` … ``north``, ``"wall"`` or ``"open"`` (transmissive). ``manning``: Manning's n [s m^-1/3]."""
 
     dx: float
     dy: float
