@@ -55,6 +55,14 @@ def test_a_cycle_between_sibling_modules_is_refused(package_copy):
     assert "no import cycles between sibling modules or packages BROKEN" in result.stdout
 
 
+def test_the_motion_may_not_reach_up_into_the_settings(package_copy):
+    # scene.settings validates animated sections with scene.motion; the old circle ran back up, lazily
+    append_import(package_copy, "scene.motion", "from .settings import Scene")
+    result = lint_imports(package_copy)
+    assert result.returncode != 0
+    assert "a scene's settings sit above its motion BROKEN" in result.stdout
+
+
 def test_mitsuba_stays_out_of_the_physics(package_copy):
     append_import(package_copy, "surface.open_sea", "import mitsuba")
     result = lint_imports(package_copy)

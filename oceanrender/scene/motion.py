@@ -69,13 +69,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
-from typing import TYPE_CHECKING, Callable, NamedTuple, Protocol, Sequence
+from typing import Any, Callable, NamedTuple, Protocol, Sequence
 
 import numpy as np
 from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
-
-if TYPE_CHECKING:
-    from .settings import CameraSettings, Scene, SunSettings
 
 # ---------------------------------------------------------------------------
 # Interpolation: C¹ piecewise cubic Hermite curves through keyframes.
@@ -555,10 +552,40 @@ def utc(year: int, month: int, day: int, hour: int = 0, minute: int = 0, second:
 
 # ---------------------------------------------------------------------------
 # The motion a scene file describes ([[camera.keys]], [[sun.keys]], [sun.clock]).
+# The sections are described by what is read from them (structural types), so that this module knows
+# nothing of scene.settings, which sits above it and validates animated sections with it.
 # ---------------------------------------------------------------------------
 
 
-def scene_camera_path(camera: "CameraSettings") -> CameraPath | None:
+class CameraSection(Protocol):
+    """What is read from a ``[camera]`` section: its pose [m, m, deg], ``keys`` (each with time [s],
+    position [m], target [m], fov [deg]) and their ``interpolation``."""
+
+    position: Sequence[float]
+    target: Sequence[float]
+    fov: float
+    keys: Sequence[Any]
+    interpolation: str
+
+
+class SunSection(Protocol):
+    """What is read from a ``[sun]`` section: ``keys`` (time [s], elevation, azimuth [deg]), their
+    ``interpolation``, and ``clock`` (latitude, longitude [deg], start, time_scale, apparent, pressure [hPa],
+    temperature [°C]) or None."""
+
+    keys: Sequence[Any]
+    interpolation: str
+    clock: Any
+
+
+class SceneSections(Protocol):
+    """A scene as far as its motion goes: its ``camera`` and ``sun`` sections."""
+
+    camera: CameraSection
+    sun: SunSection
+
+
+def scene_camera_path(camera: CameraSection) -> CameraPath | None:
     """The :class:`CameraPath` of a ``[camera]`` section with ``[[camera.keys]]``, else None."""
     if not camera.keys:
         return None
@@ -566,7 +593,7 @@ def scene_camera_path(camera: "CameraSettings") -> CameraPath | None:
     return CameraPath(keys, interpolation=camera.interpolation)
 
 
-def scene_sun_motion(sun: "SunSettings") -> SunMotion | None:
+def scene_sun_motion(sun: SunSection) -> SunMotion | None:
     """The sun motion of a ``[sun]`` section: a :class:`SunPath` (keys), a :class:`SolarClock` (clock) or None."""
     if sun.keys:
         return SunPath(tuple(SunKey(key.time, key.elevation, key.azimuth) for key in sun.keys),
@@ -577,17 +604,17 @@ def scene_sun_motion(sun: "SunSettings") -> SunMotion | None:
     return None
 
 
-def camera_motion(scene: "Scene") -> CameraPath | None:
+def camera_motion(scene: SceneSections) -> CameraPath | None:
     """The scene's camera path, or None for a still camera."""
     return scene_camera_path(scene.camera)
 
 
-def sun_motion(scene: "Scene") -> SunMotion | None:
+def sun_motion(scene: SceneSections) -> SunMotion | None:
     """The scene's sun motion, or None for a still sun."""
     return scene_sun_motion(scene.sun)
 
 
-def static_camera_pose(scene: "Scene") -> CameraPose:
+def static_camera_pose(scene: SceneSections) -> CameraPose:
     """The still camera of a scene without keys: ``[camera]`` position [m], target [m], fov [deg]."""
     c = scene.camera
     return CameraPose(np.array(c.position, dtype=float), np.array(c.target, dtype=float), float(c.fov))

@@ -25,6 +25,7 @@ from pydantic import AwareDatetime, BaseModel, ConfigDict, Field, ValidationErro
 from ..io.messages import QUOTE_LIMIT, quoted
 from ..runtime.names import SPECTRAL_VARIANTS
 from .arrays import MAX_INITIAL_SPEED
+from .motion import SolarClock, frame_times, scene_camera_path, scene_sun_motion
 
 
 class SceneError(ValueError):
@@ -584,8 +585,6 @@ class SolarClockSettings(_Section):
 
     def angles_at(self, t: float) -> tuple[float, float]:
         """(elevation, azimuth) of the sun at scene time t [s] [deg]."""
-        from .motion import SolarClock  # noqa: PLC0415
-
         clock = SolarClock(self.latitude, self.longitude, self.start, self.time_scale, self.apparent,
                            self.pressure, self.temperature)
         return tuple(clock.at(t))
@@ -989,8 +988,6 @@ class Scene(_Section):
     def _camera_over_frames(cls, value: CameraSettings, info) -> CameraSettings:
         output = info.data.get("output")
         if value.animated and output is not None:
-            from .motion import frame_times, scene_camera_path  # noqa: PLC0415
-
             path = scene_camera_path(value)
             for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
                 try:
@@ -1004,8 +1001,6 @@ class Scene(_Section):
     def _sun_over_frames(cls, value: SunSettings, info) -> SunSettings:
         output = info.data.get("output")
         if value.animated and output is not None:
-            from .motion import frame_times, scene_sun_motion  # noqa: PLC0415
-
             motion = scene_sun_motion(value)
             where = "[sun.clock]" if value.clock is not None else "[[sun.keys]]"
             for frame, t in zip(range(*output.frames), frame_times(output.frames, output.fps)):
