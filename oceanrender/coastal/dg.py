@@ -19,7 +19,7 @@ integrands of P1 h and q/h-free terms, second-order accurate for the rest).
 
 * **Face flux**: the kinetic flux-vector splitting F̂ = F⁺(U_L) + F⁻(U_R) of :mod:`.swe` (its
   Eq. 2–4, the reading of the dissertation's Eq. 12 used by the project's finite-volume
-  schemes; ``swe._kinetic_flux``), between the face values of the two neighbouring cells.
+  schemes; ``swe_kernels._kinetic_flux``), between the face values of the two neighbouring cells.
 * **Well balanced**: hydrostatic reconstruction at the faces (Audusse et al. 2004 [2]) and the
   source integrated exactly for P1 h and P1 z_b (Xing & Shu 2006 [3]; Xing, Zhang & Shu 2010
   [4], Eq. 3.6–3.9): with z*_{i+½} = max(z_L, z_R), h*_{L,R} = max(0, η_{L,R} − z*), the face
@@ -91,7 +91,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
-from .swe import G, _kinetic_flux
+from .swe_kernels import _kinetic_flux
+from .swe_state import G
 
 __all__ = ["DG_LIMITERS", "DG_CFL_BOUND", "DGParams", "DGState", "DGSolver1D", "lake_at_rest_dg"]
 

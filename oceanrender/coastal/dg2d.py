@@ -66,7 +66,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from .boundaries import Boundaries, BoundaryPlan, Transmissive, Wall
 from .dg import BOUNDARIES, DG_LIMITERS, check_numbers, differences, minmod3
-from .swe import G, _kinetic_flux
+from .swe_kernels import _kinetic_flux
+from .swe_state import G
 
 __all__ = ["DG2DParams", "DGState2D", "DGSolver2D", "lake_at_rest_dg2d", "p1_bed"]
 

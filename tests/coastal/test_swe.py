@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from oceanrender.coastal import swe
+from oceanrender.coastal import swe, swe_ksplit
 from oceanrender.coastal.analytic import (
     G as G_ANALYTIC,
     bore_jump,
@@ -329,7 +329,7 @@ def test_hancock_face_values_follow_the_scalar_formulae(rng, limiter):
     B, C, A = row[:, :-2], row[:, 1:-1], row[:, 2:]
     args = (B[0], B[1], B[2], B[3], C[0], C[1], C[2], C[3], A[0], A[1], A[2], A[3])
     fv, keep = np.zeros((9, n)), np.zeros(n)
-    swe._hancock_faces(*[np.ascontiguousarray(a) for a in args], n, fv, keep, lam, g, 2.0 / (3.0 * g), 1.5 * g,
+    swe_ksplit._hancock_faces(*[np.ascontiguousarray(a) for a in args], n, fv, keep, lam, g, 2.0 / (3.0 * g), 1.5 * g,
                        LIMITERS[limiter])
     expected, kept = _hancock_reference(*args, lam, g, limiter)
     assert 0 < kept.sum() < n  # both branches are exercised
