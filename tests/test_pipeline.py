@@ -15,6 +15,7 @@ from oceanrender.io.frames import FRAME_CHANNELS, frame_is_complete, read_exr
 from oceanrender.pipeline import Sequence, frame_paths, render_sequence
 from oceanrender.render.renderer import WaterRenderer
 from oceanrender.surface.frame import FrameGeometry
+from tests.extras import needs_spectra
 from tests.scenes import scene_from_dict, small_sea_text
 from tests.tolerances import ROUNDOFF32
 
@@ -319,8 +320,8 @@ def test_zero_adaptation_time_adapts_each_frame_to_itself(variant):
 @pytest.mark.parametrize("ocean", [
     "hs = 1.5\ntp = 6.0\ndirection = 20.0\n[[ocean.partitions]]\nhs = 1.0\ntp = 12.0\ndirection = 110.0\n"
     "spreading_s = 40.0\n",
-    f"spectrum_file = '{ROOT / 'scenes' / 'sea_states' / 'bimodal.swn'}'\nspectrum_time = '2026-03-14T08:00:00'\n"
-    "spectrum_site = 1\n",
+    pytest.param(f"spectrum_file = '{ROOT / 'scenes' / 'sea_states' / 'bimodal.swn'}'\n"
+                 "spectrum_time = '2026-03-14T08:00:00'\nspectrum_site = 1\n", marks=needs_spectra),
 ])
 def test_cli_geometry_export_of_measured_sea_states(tmp_path, capsys, ocean):
     """Issue 23 item 5: `oceanrender geometry` with the sea-state and the file forms; the sidecar says which."""

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from oceanrender.scene import SceneError, load_scene, scene_from_dict, with_overrides
+from tests.extras import needs_spectra
 from tests.tolerances import ROUNDOFF
 
 SCENES = Path(__file__).resolve().parents[2] / "scenes"
@@ -18,7 +19,8 @@ def write(tmp_path: Path, text: str) -> Path:
     return path
 
 
-@pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", [pytest.param(p, marks=needs_spectra) if p.name == "measured_sea.toml" else p
+                                  for p in sorted(SCENES.glob("*.toml"))], ids=lambda p: p.name)
 def test_shipped_scenes_load(path):
     scene = load_scene(path)
     assert scene.name == path.stem
@@ -385,6 +387,7 @@ def test_object_paths_are_relative_to_the_scene_file(tmp_path):
 EXAMPLE = SCENES / "sea_states" / "bimodal.swn"
 
 
+@needs_spectra
 @pytest.mark.parametrize(("extra", "key", "expected"), [
     ("spectrum_time = '2026-03-14T09:00:00'\n", "spectrum_time", "is not in the file (it has 3 times"),
     ("spectrum_time = 'noon'\n", "spectrum_time", "is not an ISO 8601 time"),
@@ -399,12 +402,14 @@ def test_spectrum_file_errors_name_the_key_before_any_work(tmp_path, extra, key,
     assert message.startswith(f"{path}: [ocean] {key}: {EXAMPLE}: ") and expected in message and "\n" not in message
 
 
+@needs_spectra
 def test_unreadable_spectrum_file(tmp_path):
     (tmp_path / "garbage.swn").write_text("not a spectrum\n")
     with pytest.raises(SceneError, match=r"\[ocean\] spectrum_file: .*garbage.swn: wavespectra.read_swan cannot read"):
         load_scene(write(tmp_path, "[ocean]\nspectrum_file = 'garbage.swn'\n"))
 
 
+@needs_spectra
 def test_sea_forms_are_read():
     wind = load_scene(SCENES / "open_ocean.toml").ocean
     state = load_scene(SCENES / "swell_crossing.toml").ocean

@@ -19,6 +19,7 @@ from oceanrender.waves.sea_state import (
     partition_spectrum,
 )
 from oceanrender.waves.wave_spectra import GRAVITY, SEAWATER_SURFACE_TENSION, dispersion_relation
+from tests.extras import needs_spectra
 from tests.tolerances import QUADRATURE
 
 ROOT = __import__("pathlib").Path(__file__).resolve().parents[2]
@@ -128,6 +129,7 @@ def test_generated_sea_state_matches_its_hs_tp_and_direction(resolving_grid):
     assert math.degrees(direction_of(power, resolving_grid)) == pytest.approx(35.0, abs=2.0)
 
 
+@needs_spectra
 def test_the_example_file_is_read_in_the_projects_frame():
     table = read_spectrum_file(EXAMPLE, "swan", "2026-03-14T07:00:00", 1)
     assert (table.time, table.site, table.sites) == ("2026-03-14T07:00:00", 1, 2)
@@ -142,6 +144,7 @@ def test_the_example_file_is_read_in_the_projects_frame():
     assert math.degrees(table.direction[np.argmax(table.density[swell])]) == pytest.approx(110.0, abs=5.0)
 
 
+@needs_spectra
 def test_bimodal_file_gives_two_peaks_at_the_right_directions(resolving_grid):
     """The generated (kx, ky) power has its two maxima where the file puts the wind sea (θ = 20°) and the
     swell (θ = 110°), within the file's 10° direction bins."""
