@@ -21,3 +21,15 @@ def variant():
         warnings.simplefilter("ignore", RuntimeWarning)
         info = activate_variant("auto")
     return info.variant
+
+
+#: How many tests this run collected, and whether it is the whole suite (no paths, no -k, no -m): what
+#: tests/test_readme.py compares with the README's count.
+COLLECTED = pytest.StashKey[int]()
+WHOLE_SUITE = pytest.StashKey[bool]()
+
+
+def pytest_collection_modifyitems(session, config, items):
+    config.stash[COLLECTED] = len(items)
+    config.stash[WHOLE_SUITE] = (not config.args or config.args == config.getini("testpaths")) and \
+        not config.option.keyword and not config.option.markexpr and not config.option.deselect
