@@ -241,9 +241,10 @@ class DGSolver2D:
     def _outside(self, side: int, h: NDArray, qn: NDArray, qt: NDArray, z: NDArray) -> tuple[NDArray, ...]:
         """(h, q_normal, q_transverse) outside the domain at a boundary face point, from the inside values there
         (each (n, 1)) and the face's bed z [m]: a wall mirrors them (q_normal → −q_normal); the other sides take
-        the ghost cell of :class:`.boundaries.BoundaryPlan` (transmissive: the first cell's mean; incident waves:
-        the characteristic state) as a level η_g = h_g + z_g, i.e. depth max(0, η_g − z) at the face (0 if the ghost is dry), with
-        the ghost's velocity. Side index in the order of :data:`.boundaries.SIDES`."""
+        the ghost cell of :class:`.boundaries.BoundaryPlan` built from this face point (:meth:`_fill_face_ghosts`;
+        transmissive: its copy; incident waves: the characteristic state) as a level η_g = h_g + z_g, i.e. depth
+        max(0, η_g − z) at the face (0 if the ghost is dry), with the ghost's velocity. Side index in the order of
+        :data:`.boundaries.SIDES`."""
         if self._plan.kinds[side] == 0:
             return h, -qn, qt
         ghosts = self._columns if side < 2 else self._rows
@@ -271,8 +272,9 @@ class DGSolver2D:
         face beds [m]), not from their means: an absorbing side then sees the wave at the face, where the
         flux is taken. Each face value enters as the depth h + z_face − z̄ over the cell's mean bed z̄ (the
         same surface; 0 where the face point is dry) with the face's velocity."""
-        scratch = self._scratch
-        np.copyto(scratch, c[:, 0])
+        scratch = self._scratch  # the plan reads only its edge rows and columns: the other axis's keep the means
+        for edge in (np.s_[:, :, 0], np.s_[:, :, -1], np.s_[:, 0, :], np.s_[:, -1, :]):
+            scratch[edge] = c[:, 0][edge]
         bed = self.bed[0]
         normal, transverse = (1, 2) if axis == "x" else (2, 1)
         edges = ((np.s_[:, 0], np.s_[:, -1]) if axis == "x" else (np.s_[0, :], np.s_[-1, :]))

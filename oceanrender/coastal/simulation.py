@@ -60,9 +60,6 @@ from .dg2d import DG2DParams
 from .dg_coast import DGCoastSolver, P1State, corners_from_centres, p1_initial_state
 from .swe import H_FLOOR, ShallowWaterSolver, SolverParams, State
 
-#: TVB constant M of ``limiter = "TVB"`` when the scene gives no ``tvb_m`` (:mod:`.dg`) [m⁻¹].
-TVB_M = 50.0
-
 #: Format version of the stored fields. 2: the canonical stop schedule (:func:`stop_times`);
 #: stores of version 1 stopped elsewhere, so their fields differ and are recomputed.
 STORE_VERSION = 2
@@ -147,9 +144,9 @@ def _dg_solver_for_scene(scene) -> tuple[DGCoastSolver, np.ndarray, P1State]:
     coastal = scene.coastal
     dx, dy = coastal.spacing
     corners = corners_from_centres(arrays.bathymetry(coastal))
-    params = DG2DParams(dx=dx, dy=dy, cfl=coastal.cfl, limiter=coastal.limiter, tvb_m=coastal.tvb_m or TVB_M,
-                        h_dry=max(coastal.h_min, H_FLOOR), manning=coastal.manning,
-                        boundaries=inputs.boundaries(coastal, scene.ocean))
+    tvb = {} if coastal.tvb_m is None else {"tvb_m": coastal.tvb_m}  # left out: DG2DParams' own M
+    params = DG2DParams(dx=dx, dy=dy, cfl=coastal.cfl, limiter=coastal.limiter, h_dry=max(coastal.h_min, H_FLOOR),
+                        manning=coastal.manning, boundaries=inputs.boundaries(coastal, scene.ocean), **tvb)
     solver = DGCoastSolver(corners, params)
     if coastal.initial_surface == "still":
         surface = coastal.still_level

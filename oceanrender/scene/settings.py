@@ -58,10 +58,6 @@ from .view_sections import (
     SunKeySettings,
     SunSettings,
     VisionSettings,
-    _as_tuple,
-    _check_key_times,
-    _first_key_fills,
-    _key_value,
 )
 
 
