@@ -1,14 +1,15 @@
 # The two quick-start commands (see README):
 #   make render   render the default scene's short sequence into outputs/
-#   make test     run the whole test suite
+#   make test     run the test suite's fast tier (all but the tests marked slow), in minutes
 # Both set the machine up on first use (scripts/bootstrap.sh), from requirements.lock.
+#   make test-slow  the long tests (marked slow); CI runs both tiers, as does make test-all
 #   make lock     refresh the lock on purpose; replaces it only if the suite passes
 #   make drift    newest allowed versions in .venv-drift, fast tests, warnings only
 
 VENV := .venv
 PY := $(VENV)/bin/python
 
-.PHONY: setup render test bench info lock drift
+.PHONY: setup render test test-slow test-all bench info lock drift
 
 setup:
 	@bash scripts/bootstrap.sh
@@ -17,6 +18,12 @@ render: setup
 	$(VENV)/bin/oceanrender render scenes/open_ocean.toml
 
 test: setup
+	$(PY) -m pytest -q -m "not slow"
+
+test-slow: setup
+	$(PY) -m pytest -q -m slow
+
+test-all: setup
 	$(PY) -m pytest -q
 
 bench: setup

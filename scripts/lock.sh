@@ -39,8 +39,8 @@ diff <(grep -E '^[A-Za-z0-9].*==' "$LOCK" | sed 's/ .*//') <(grep -E '^[A-Za-z0-
 
 cp "$LOCK" "$LOCK.previous"
 cp "$new" "$LOCK"
-echo "lock: rebuilding .venv from the new lock and running the whole suite (make test)"
-if OCEANRENDER_FRESH_VENV=1 make test; then
+echo "lock: rebuilding .venv from the new lock and running the whole suite (make test-all)"
+if OCEANRENDER_FRESH_VENV=1 make test-all; then
   rm -f "$LOCK.previous"
   echo "lock: the suite passes with the new lock: review 'git diff $LOCK' and commit it"
 else

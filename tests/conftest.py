@@ -23,13 +23,25 @@ def variant():
     return info.variant
 
 
-#: How many tests this run collected, and whether it is the whole suite (no paths, no -k, no -m): what
-#: tests/test_readme.py compares with the README's count.
-COLLECTED = pytest.StashKey[int]()
-WHOLE_SUITE = pytest.StashKey[bool]()
+#: How many tests this run selected and left out by its marker expression, and which tier of the suite it is:
+#: "fast" (``make test``: -m "not slow"), "slow" (``make test-slow``: -m slow), "all" (no marker expression),
+#: None for a partial run (paths, -k, deselections, another expression): what tests/test_readme.py compares
+#: with the README's counts.
+SELECTED = pytest.StashKey[int]()
+LEFT_OUT = pytest.StashKey[int]()
+TIER = pytest.StashKey[str | None]()
+TIERS = {"": "all", "not slow": "fast", "slow": "slow"}
 
 
-def pytest_collection_modifyitems(session, config, items):
-    config.stash[COLLECTED] = len(items)
-    config.stash[WHOLE_SUITE] = (not config.args or config.args == config.getini("testpaths")) and \
-        not config.option.keyword and not config.option.markexpr and not config.option.deselect
+def pytest_deselected(items):
+    config = items[0].config if items else None
+    if config is not None:
+        config.stash[LEFT_OUT] = config.stash.get(LEFT_OUT, 0) + len(items)
+
+
+def pytest_collection_finish(session):
+    config = session.config
+    config.stash[SELECTED] = len(session.items)
+    whole = (not config.args or config.args == config.getini("testpaths")) and \
+        not config.option.keyword and not config.option.deselect
+    config.stash[TIER] = TIERS.get((config.option.markexpr or "").strip()) if whole else None

@@ -157,6 +157,7 @@ def test_a_frame_beyond_the_memory_estimate_is_refused_with_it(tmp_path, capsys,
     assert not (tmp_path / "o").exists()
 
 
+@pytest.mark.slow
 def test_a_disk_that_fills_mid_run_is_one_line_and_the_rerun_resumes(tmp_path, capsys, monkeypatch):
     """ENOSPC while writing frame 1: exit 1, one line, frame 0 kept; the rerun renders only frame 1."""
     import errno
@@ -223,6 +224,7 @@ def test_an_output_folder_named_with_a_tilde_stays_where_it_is_named(tmp_path, c
     assert not [p for p in home.rglob("*frame_0000*")]  # ($HOME holds only drjit's and our caches)
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_an_empty_scene_file_renders_the_default_sea_to_the_horizon(tmp_path):
     """Issue 39: an empty file rendered one 128 m patch and a band of exact zeros below the horizon."""

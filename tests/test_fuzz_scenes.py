@@ -366,6 +366,7 @@ def judge(answer: dict, out: Path, before: set[Path], after: set[Path]) -> tuple
 @example(case=("open_ocean", tiny_with(BASES["open_ocean"], ("sun", "elevation"), 0.5), ["sun.elevation = 0.5"]))
 @example(case=("open_ocean", tiny_with(BASES["open_ocean"], ("output", "directory"), "~/tilde"),
                ["output.directory = '~/tilde'"]))
+@pytest.mark.slow
 def test_a_mutated_scene_is_refused_in_one_line_or_renders_finite_pixels(case, worker, tmp_path_factory):
     base, scene, done = case
     folder = tmp_path_factory.mktemp("fuzz")

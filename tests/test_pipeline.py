@@ -47,6 +47,7 @@ def tiny_toml(tmp_path, frames=(0, 2), resolution=(24, 16), spp=4):
     return path
 
 
+@pytest.mark.slow
 def test_per_frame_update_renders_like_a_fresh_load(variant):
     scene = tiny_scene()
     sequence = Sequence(scene, variant)  # loaded with frame 0's geometry
@@ -100,6 +101,7 @@ def test_cli_tiny_render_end_to_end(tmp_path, capsys):
     assert frame_is_complete(tmp_path / "o2/tiny/frame_0002.exr", tmp_path / "o2/tiny/frame_0002.png", (12, 8))
 
 
+@pytest.mark.slow
 def test_cli_denoised_render_then_movie_and_contact_sheet(tmp_path, capsys):
     scene = tiny_toml(tmp_path, frames=(0, 3), resolution=(32, 18))
     assert main(["render", str(scene), "--denoise", "--no-progress"]) == 0
@@ -134,6 +136,7 @@ def test_cli_user_errors_are_one_line_exit_2(tmp_path, capsys, args, message):
     assert message in err and "\n" not in err and "Traceback" not in err
 
 
+@pytest.mark.slow
 def test_killed_run_resumes_without_losing_frames(tmp_path):
     """SIGKILL at a seeded random frame, rerun: finished frames kept, the rest identical to an uninterrupted run.
 
@@ -254,6 +257,7 @@ def test_adaptation_luminance_modes():
         adaptation_luminance(daylight, xyz)
 
 
+@pytest.mark.slow
 def test_spectral_bands_integrate_a_constant_sky_and_are_written(variant, tmp_path):
     import mitsuba as mi
 
@@ -277,6 +281,7 @@ def test_spectral_bands_integrate_a_constant_sky_and_are_written(variant, tmp_pa
     assert channels["477.5-595.0nm"].mean() > 10 * channels["712.5-830.0nm"].mean() >= 0
 
 
+@pytest.mark.slow
 def test_followed_adaptation_depends_on_the_frame_alone(variant):
     # The eye's state at frame 3 (τ = 0.05 s at 24 fps: a window of frames 0-3) from a run that rendered
     # frames 0-2 first equals that of a fresh run starting at frame 3 (a resumed run, or another Dask

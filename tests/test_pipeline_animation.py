@@ -74,6 +74,7 @@ def test_radial_grid_follows_the_camera_and_matches_a_still_camera_at_each_key(m
     assert np.hypot(*(moving.grid_at(4 / FPS).center - np.array(moving.grid_at(0.0).center))) > 9.0
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_frame_at_a_keyframe_equals_a_still_render_at_that_key(variant):
     from oceanrender.pipeline import Sequence
@@ -107,6 +108,7 @@ def test_frame_at_a_keyframe_equals_a_still_render_at_that_key(variant):
     assert np.abs(first.channels["Y"] - frame.channels["Y"]).mean() > 0.2 * frame.channels["Y"].mean()
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_moving_sun_changes_sky_integrator_white_and_image_without_recompiling(variant):
     import drjit as dr
@@ -144,6 +146,7 @@ def test_moving_sun_changes_sky_integrator_white_and_image_without_recompiling(v
     assert low.channels["Y"].mean() < 0.8 * high.channels["Y"].mean()
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_two_pass_frames_point_both_integrators_at_the_moving_sun(variant):
     from oceanrender.pipeline import Sequence

@@ -140,6 +140,7 @@ def _paraboloid(n):
             float(np.abs(fv_state.h - target).sum() * d * d))
 
 
+@pytest.mark.slow
 def test_thacker_paraboloid_moving_shoreline_in_2d():
     """Thacker's tilted plane circling in a paraboloid (h0 0.1 m, a 1 m, eta 0.5 m), one period, walls.
     Measured (DG; MUSCL-Hancock): L1 2.07e-2, 7.3e-3 at 20, 40 cells (order 1.5); 2.4e-2, 1.07e-2. Bounds:

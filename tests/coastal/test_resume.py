@@ -275,6 +275,7 @@ def wait_for(path: Path, proc: subprocess.Popen) -> float:
     return time.perf_counter()
 
 
+@pytest.mark.slow
 def test_killed_runs_resume_exactly(tmp_path):
     """SIGKILL at a random moment of the simulation, rerun to completion: every frame as the uninterrupted run's.
 

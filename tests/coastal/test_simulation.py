@@ -139,6 +139,7 @@ def test_cli_coastal_writes_fields(tmp_path, capsys):
     assert (tmp_path / "fields" / "frame_0001.exr").is_file()
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_cli_renders_a_tiny_coastal_scene(tmp_path, capsys):
     scene = tmp_path / "beach.toml"

@@ -61,6 +61,7 @@ def test_fit_recovers_the_slope_variance_of_cox_munk_radiance(mss):
     assert fit_slope_variance(L, o, sun_direction(12.0, 0.0)) == pytest.approx(mss, rel=0.02)
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_glitter_width_follows_the_total_slope_variance(variant):
     """The glitter scene, sun only (sky_scale 0) so the water's radiance is the sun's glitter (plus a

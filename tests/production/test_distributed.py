@@ -92,6 +92,7 @@ def test_sequence_key_names_what_the_pixels_depend_on():
                                None)
 
 
+@pytest.mark.slow
 def test_cli_on_a_cluster_writes_the_single_process_frames(variant, cluster, tmp_path, capsys):
     local, client = cluster
     toml = tiny_toml(tmp_path)
@@ -116,6 +117,7 @@ def test_cli_on_a_cluster_writes_the_single_process_frames(variant, cluster, tmp
     assert stamps == [frame_paths(out, f).exr.stat().st_mtime_ns for f in range(4)]
 
 
+@pytest.mark.slow
 def test_frames_of_a_killed_worker_are_rendered_again_exactly_once(variant, cluster, tmp_path):
     local, client = cluster
     # A new size: each worker loads a new scene; frames of a few seconds each, so a kill lands mid-task.
@@ -172,6 +174,7 @@ def test_cli_refuses_bad_dask_options_before_any_work(tmp_path, capsys):
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.slow
 def test_a_coastal_scene_simulates_once_on_the_client_and_renders_from_its_fields(variant, cluster, tmp_path):
     from tests.coastal.test_simulation import TINY_COASTAL  # noqa: PLC0415 (tests/ is on sys.path under pytest)
 

@@ -16,7 +16,7 @@ from oceanrender.realtime.validate import ShaderRunner, read_reference_set, vali
 from . import TINY_COASTAL
 from tests.scenes import small_sea_text
 
-pytestmark = pytest.mark.render
+pytestmark = [pytest.mark.render, pytest.mark.slow]  # every test grades a shader on rendered references
 
 #: The deliberate bug: the Fresnel LUT looked up at 1 − μ instead of μ = cos θ (an angle/cosine mix-up).
 FRESNEL_LINE = "clamp(mu, 0.0, 1.0)).r, 0.0, 1.0);  // FRESNEL LOOKUP"

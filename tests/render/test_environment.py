@@ -119,6 +119,7 @@ def test_environment_keys_are_checked(tmp_path, capsys):
     assert "works under sunsky's sun and sky only" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_the_environment_scene_renders_with_its_passes(tmp_path):
     from oceanrender.io.frames import read_exr
     from oceanrender.pipeline import pass_channels

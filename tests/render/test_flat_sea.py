@@ -15,6 +15,7 @@ pytestmark = pytest.mark.render
 ROOT = Path(__file__).resolve().parents[2]
 
 
+@pytest.mark.slow
 def test_turbid_estuary_water_leaving_radiance_follows_the_model(variant):
     """Model/render − 1 within 5 % plus three standard errors of the render (its noise at
     2^16 paths × 4 passes is 1–3 %); the fixed closure of before is more than 20 % off."""

@@ -217,6 +217,7 @@ def test_two_passes_with_early_roulette_have_the_expectation_of_one(scenes):
     assert np.all(t_mean > 10 * Z_MAX * np.hypot(one_se, two_se)), (t_mean, one_se, two_se)
 
 
+@pytest.mark.slow
 def test_stratified_samples_keep_the_mean_and_lower_the_noise(scenes):
     # Towards the sun over the three pools (glints, reflected sky, scattering water): the split integrator
     # with Mitsuba's multijitter sampler (the frames' default) against the same integrator with independent
@@ -244,6 +245,7 @@ def test_split_reduces_the_noise_of_the_reflected_sky(scenes):
     assert noise["split"] < 0.5 * noise["volpath"], noise
 
 
+@pytest.mark.slow
 def test_a_ray_that_misses_the_water_returns_the_sky_radiance(scenes):
     # Looking up at the sky only. ``path`` with max_depth = 1 returns exactly the
     # radiance of the emitter a camera ray meets; the wavelengths and pixel

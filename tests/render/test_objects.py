@@ -41,6 +41,7 @@ def _render(tmp_path, name, camera, with_box):
     return np.stack([channels[c] for c in "XYZ"], -1), meta
 
 
+@pytest.mark.slow
 def test_a_box_across_the_surface_is_seen_from_above_and_below(tmp_path):
     above = '[camera]\nposition = [0.0, 0.0, 2.5]\ntarget = [0.0, 6.0, 0.5]\nfov = 50.0'
     below = '[camera]\nposition = [0.0, 0.0, -1.5]\ntarget = [0.0, 6.0, -0.5]\nfov = 50.0'

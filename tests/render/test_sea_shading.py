@@ -304,6 +304,7 @@ def test_pixel_angle():
     assert pixel_angle(60.0, 1280) == pytest.approx(2 * math.tan(math.radians(30)) / 1280)
 
 
+@pytest.mark.slow
 def test_field_shaded_frame_is_split_and_keeps_the_vertex_frame_s_mean(variant):
     # The small sea (a 256² patch, 0.5 m vertex spacing, seen from 5 m): shaded from the fields
     # at every hit, the ``split`` integrator still splits it (the wrapper is its dielectric), and
@@ -385,6 +386,7 @@ def test_a_hit_s_shading_is_evaluated_once_and_is_the_bsdf_s_own(variant, body_a
             np.testing.assert_allclose(got, expected, rtol=0, atol=ROUNDOFF32 * np.max(np.abs(expected)))
 
 
+@pytest.mark.slow
 def test_a_path_s_hits_on_the_sea_are_prepared_once_with_the_same_result(variant, monkeypatch):
     # trace_path given the sea's BSDF (its hits prepared once per step, in a symbolic branch)
     # renders what it renders calling the BSDF per method: the same random numbers and the same

@@ -42,6 +42,7 @@ def test_isotropic_half_space_albedo_matches_chandrasekhar(variant):
     assert abs(light.R - exact) <= 5 * light.E_u0_error + 5e-3 * exact
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("bb_over_a", "omega", "zenith_air"), [(1.0, 0.95, 0.0), (0.1, 0.8, 60.0)])
 def test_four_flux_from_the_phase_function_agrees_with_monte_carlo(variant, bb_over_a, omega, zenith_air):
     """K_d over the first optical depth and R(0⁻) within 5 % (the issue's goal) of the Mitsuba slab

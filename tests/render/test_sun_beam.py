@@ -61,6 +61,7 @@ def floor_scene(cell):
                             "camera": {"position": [0.0, 0.0, 2.5], "target": [0.0, 5.0, -3.0], "fov": 60.0}})
 
 
+@pytest.mark.slow
 def test_the_floor_s_sun_from_the_map_keeps_the_unbiased_mean(variant):
     # The in-water pass of the floor scene with the sun's beam on the floor from the map
     # (2 cm cells) and without (the path tracer's connections through the surface): the map
@@ -89,6 +90,7 @@ def test_the_floor_s_sun_from_the_map_keeps_the_unbiased_mean(variant):
     assert means[0.02] == pytest.approx(means[0.0], rel=0.03)
 
 
+@pytest.mark.slow
 def test_the_volume_s_sun_from_the_planes_keeps_the_unbiased_mean(variant):
     # The floor scene's water made green coastal (scattering b ≈ 1 m⁻¹: the sun scattered once in
     # the water is a large part of the in-water light), its floor map off, the volume's planes on
@@ -318,6 +320,7 @@ def test_a_sinusoid_s_caustic_is_sharpest_at_the_crest_s_focal_depth(variant, am
     assert max(peaks.values()) > 20  # a focus: the brightest cell many times the flat beam
 
 
+@pytest.mark.slow
 def test_the_coast_s_sand_from_the_terrain_map_keeps_the_unbiased_mean(variant, tmp_path):
     # A small breaking beach (15 m × 10 m, 25 cm cells, 1:12.5, 0.4 m waves breaking into white water), the sun
     # 45° high, seen from 3 m up: the frame with the sun on the sand from the terrain's map (2 cm cells, the rays
@@ -385,6 +388,7 @@ def test_the_roughness_blur_spreads_a_point_by_its_path_and_keeps_its_power(vari
     np.testing.assert_allclose(np.asarray(es, float).reshape(count, count)[50, 50], 2.0 * e[50, 50], rtol=1e-6)
 
 
+@pytest.mark.slow
 def test_the_meter_s_quick_renders_leave_the_floor_s_map_out(variant):
     # The meter renders other frames of its window at 2 spp for their mean: the path tracer alone does that
     # unbiased, so their map is not traced (on the coast a map costs seconds); the frame's own render traces it.

@@ -129,6 +129,7 @@ def test_single_scattering_of_sunlight_matches_the_closed_form(variant):
     assert Y_water == pytest.approx(expected, rel=0.04)
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_in_water_clamp_bounds_the_samples_and_is_inert_when_high(variant):
     import mitsuba as mi
@@ -210,6 +211,7 @@ def deep_pool_scene(sigma_t, spp):
     })
 
 
+@pytest.mark.slow
 @pytest.mark.render
 def test_a_deep_medium_looks_the_same_whatever_its_extinction_spectrum(variant):
     import mitsuba as mi

@@ -22,6 +22,7 @@ def _render(tmp_path, name, camera, extra="", resolution=(192, 192), spp=16):
     return read_exr(tmp_path / "out" / name / "frame_0000.exr")
 
 
+@pytest.mark.slow
 def test_snells_window_from_under_a_calm_sea(tmp_path):
     # Looking straight up from 3 m under a calm sea (0.5 m/s wind, smooth surface): the sky is seen inside a
     # cone of half-angle asin(1/n) = 48.6°, total internal reflection of the deep water outside it.
@@ -49,6 +50,7 @@ def test_snells_window_from_under_a_calm_sea(tmp_path):
     assert abs(crossing + 0.25 - expected) <= 1.0, (crossing, expected)
 
 
+@pytest.mark.slow
 def test_a_level_view_under_the_waves_has_no_nan_and_is_under_water(tmp_path):
     channels, meta = _render(tmp_path, "level", "[camera]\nposition = [0.0, 0.0, -4.0]\n"
                              "target = [0.0, 10.0, -1.0]\nfov = 90.0", resolution=(64, 36), spp=8)
@@ -60,12 +62,14 @@ def test_a_level_view_under_the_waves_has_no_nan_and_is_under_water(tmp_path):
     assert rgb[..., 2].mean() > 2 * rgb[..., 0].mean()
 
 
+@pytest.mark.slow
 def test_a_camera_above_the_water_renders_from_the_air(tmp_path):
     _, meta = _render(tmp_path, "above", "[camera]\nposition = [0.0, 0.0, 6.0]\ntarget = [0.0, 10.0, 0.0]\nfov = 60.0",
                       resolution=(32, 18), spp=4)
     assert meta["camera_in_water"] in (False, "false")
 
 
+@pytest.mark.slow
 def test_a_camera_path_through_the_surface_renders_each_frame_from_its_side(tmp_path):
     # Keys from 2 m above to 2 m under the still level over 4 frames at 2 fps: the first two frames are in
     # the air, the last two in the water (a calm 1 m/s sea is ±0.05 m high), none refused, none non-finite.
@@ -84,6 +88,7 @@ def test_a_camera_path_through_the_surface_renders_each_frame_from_its_side(tmp_
     assert sides == [False, False, True, True]
 
 
+@pytest.mark.slow
 def test_an_open_sea_seafloor_is_seen_from_under_the_water(tmp_path):
     # 3 m under a 6 m deep sea, looking 45° down at an opaque Lambertian bottom: a bright floor (albedo 0.5)
     # returns far more light than a black one (albedo 0); 16 spp noise is a few % of the mean of 200 pixels.
