@@ -8,6 +8,11 @@
 # OCEANRENDER_FRESH_VENV=1 rebuilds .venv regardless (CI does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# One set-up at a time: `make render` and `make test` started together (or a render beside the tests)
+# would both rebuild .venv at once and break it (seen: pip's files removed under the other pip). The
+# second waits here for the first, then finds .venv ready by its stamp and goes on.
+exec 9>.bootstrap.lock
+flock 9
 PY=${PYTHON:-python3}
 VENV=.venv
 STAMP=$VENV/.oceanrender-stamp

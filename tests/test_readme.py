@@ -12,7 +12,8 @@ README = Path(__file__).resolve().parents[1] / "README.md"
 
 def stated_count(command: str) -> int:
     """N of the README's "`COMMAND` runs ~N tests" [-]."""
-    stated = re.search(rf"`{command}` runs ~(\d+) (?:more )?tests", README.read_text(encoding="utf-8"))
+    # (a sentence may wrap anywhere)
+    stated = re.search(rf"`{command}`\s+runs\s+~(\d+)\s+(?:more\s+)?tests", README.read_text(encoding="utf-8"))
     assert stated, f"README: the sentence '`{command}` runs ~N tests' is gone"
     return int(stated.group(1))
 
