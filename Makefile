@@ -2,7 +2,7 @@
 #   make render   render the default scene's short sequence into outputs/
 #   make test     run the test suite's fast tier (all but the tests marked slow), in minutes
 # Both set the machine up on first use (scripts/bootstrap.sh), from requirements.lock.
-#   make test-slow  the long tests (marked slow); CI runs both tiers, as does make test-all
+#   make test-slow  the long tests (marked slow); CI runs both tiers; make test-all runs both in one process
 #   make lock     refresh the lock on purpose; replaces it only if the suite passes
 #   make drift    newest allowed versions in .venv-drift, fast tests, warnings only
 

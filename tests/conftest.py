@@ -24,13 +24,13 @@ def variant():
 
 
 #: How many tests this run selected and left out by its marker expression, and which tier of the suite it is:
-#: "fast" (``make test``: -m "not slow"), "slow" (``make test-slow``: -m slow), "all" (no marker expression),
-#: None for a partial run (paths, -k, deselections, another expression): what tests/test_readme.py compares
-#: with the README's counts.
+#: "fast" (``make test``: -m "not slow"), "all" (``make test-all``: no marker expression), None for any
+#: other run (paths, -k, deselections, ``make test-slow``, which holds no test of the README): what
+#: tests/test_readme.py compares with the README's counts.
 SELECTED = pytest.StashKey[int]()
 LEFT_OUT = pytest.StashKey[int]()
 TIER = pytest.StashKey[str | None]()
-TIERS = {"": "all", "not slow": "fast", "slow": "slow"}
+TIERS = {"": "all", "not slow": "fast"}
 
 
 def pytest_deselected(items):
