@@ -168,9 +168,10 @@ class Sequence:
         self.faces = self.body.faces
         self.iops = water_optics(scene)
         first_frame = scene.output.frames[0] if first_frame is None else first_frame
-        first = self.geometry(first_frame)
-        # NOTE: the scene is loaded with this frame's geometry; render_frame reuses it once.
-        self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
+        # A calm stand-in of the first frame's water loads the scene when the meter's kernels can compile while
+        # the real water is computed (_first_geometry); else the real one, computed now.
+        stand_in = self._stand_in(first_frame)
+        first = self.geometry(first_frame) if stand_in is None else stand_in
         self.roughness = surface_roughness(scene, self.body)
         self.sun_lobe_alpha = sun_lobe_alpha(scene, self.body, self.roughness)
         from .scene.motion import SunAngles, camera_motion, static_camera_pose, sun_motion  # noqa: PLC0415
@@ -205,9 +206,29 @@ class Sequence:
             # registries the kernels dispatch over, so a frame rendered before them would run another kernel than
             # one rendered after (other float round-off): a resumed run would then differ from a whole one.
             self.renderer.prepare_blocks()
+        if stand_in is not None:
+            first = self._first_geometry(first_frame)
+        # NOTE: the scene is loaded with this frame's geometry (or its stand-in); compute_frame updates the water
+        # to it and reuses it once.
+        self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
         self._frame_geometry = None  # (frame, geometry) of the frame compute_frame is metering
         self._map_illuminance: float | None = None  # [lx], of an [environment] map, measured once
+
+    def _stand_in(self, frame: int) -> FrameGeometry | None:
+        """The body's calm stand-in for ``frame`` (``frame_layout``: same arrays, the sea at rest) when the meter's
+        kernels are to be compiled beside the real water (JIT variant, adaptation that follows the view); else None.
+        """
+        layout = getattr(self.body, "frame_layout", None)
+        if layout is None or not self.follows_adaptation or not self.variant.startswith(("llvm", "cuda")):
+            return None
+        return layout(self.time_of(frame))
+
+    def _first_geometry(self, frame: int) -> FrameGeometry:
+        """``frame``'s water, computed (numpy) while another thread compiles the meter's kernels
+        (:meth:`~oceanrender.render.renderer.WaterRenderer.compile_blocks_beside`; measured on the default
+        scene with a cold kernel cache: ~9 s of compilation beside ~10 s of sea, BENCHMARKS.md)."""
+        return self.renderer.compile_blocks_beside(lambda: self.geometry(frame))
 
     def _measure_white(self, frame: int) -> None:
         """The adapting white [cd m⁻²] under the sun of ``frame`` (:attr:`sun_angles`), measured once per frame."""

@@ -59,18 +59,18 @@ def ray_cast_foam(scene, geometry, faces, coverage, fresh, resolution, near):
     import drjit as dr
     import mitsuba as mi
 
-    from oceanrender.render.renderer import mitsuba_floats
+    from oceanrender.render.buffers import jit_floats
     from oceanrender.render.scene import perspective_sensor
 
     width, height = resolution
     props = mi.Properties()
     props["bsdf"] = mi.load_dict({"type": "diffuse"})
     mesh = mi.Mesh("water", len(geometry.positions), len(faces), props, has_vertex_normals=True)
-    mesh.add_attribute("vertex_foam", 1, mitsuba_floats(coverage))
-    mesh.add_attribute("vertex_foam_fresh", 1, mitsuba_floats(fresh))
+    mesh.add_attribute("vertex_foam", 1, jit_floats(coverage))
+    mesh.add_attribute("vertex_foam_fresh", 1, jit_floats(fresh))
     params = mi.traverse(mesh)
-    params["vertex_positions"] = mitsuba_floats(geometry.positions)
-    params["vertex_normals"] = mitsuba_floats(geometry.normals)
+    params["vertex_positions"] = jit_floats(geometry.positions)
+    params["vertex_normals"] = jit_floats(geometry.normals)
     params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
     params.update()
     film = {"type": "hdrfilm", "width": width, "height": height}

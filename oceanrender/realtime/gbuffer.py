@@ -24,6 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..optics.fresnel import refract
+from ..render.buffers import jit_bools, jit_floats
 
 
 __all__ = ["Camera", "camera_for_scene", "GBuffer", "trace_gbuffer", "KIND_SKY", "KIND_WATER", "KIND_LAND",
@@ -215,7 +216,7 @@ def _shape_index(shapes_ptr) -> NDArray[np.uint32]:
 def _vectors(a: NDArray):
     import mitsuba as mi  # noqa: PLC0415
 
-    return mi.Vector3f(*(mi.Float(np.ascontiguousarray(a[:, k], dtype=np.float32)) for k in range(3)))
+    return mi.Vector3f(*(jit_floats(a[:, k]) for k in range(3)))
 
 
 def _numpy3(v) -> NDArray[np.float64]:
@@ -280,7 +281,7 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
     def water_attribute(name: str, top: float) -> NDArray:
         if not (water.any() and water_shape.has_attribute(name)):
             return np.zeros(len(d))
-        values = np.array(water_shape.eval_attribute_1(name, si, mi.Bool(water)), dtype=np.float64)
+        values = np.array(water_shape.eval_attribute_1(name, si, jit_bools(water)), dtype=np.float64)
         return np.where(water, np.clip(np.nan_to_num(values), 0.0, top), 0.0)
 
     roughness = water_attribute(roughness_attribute, np.inf)
@@ -297,7 +298,7 @@ def trace_gbuffer(scene, camera: Camera, n_water: float, water_id: str = "water"
         def coverage(interaction, active: NDArray) -> NDArray:
             if not has_attribute or not active.any():
                 return np.zeros(len(active))
-            values = np.array(bottom.eval_attribute_1(rock_attribute, interaction, mi.Bool(active)), dtype=np.float64)
+            values = np.array(bottom.eval_attribute_1(rock_attribute, interaction, jit_bools(active)), dtype=np.float64)
             return np.where(active, np.clip(np.nan_to_num(values), 0.0, 1.0), 0.0)
 
         land = kind == KIND_LAND

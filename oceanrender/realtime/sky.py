@@ -12,6 +12,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..render.buffers import jit_floats
+
 __all__ = ["SUNSKY_LAST_NM", "sky_radiance_spectra", "sunsky_wavelengths"]
 
 #: Wavelengths per Mitsuba spectral sample (``mi.Spectrum`` has four lanes).
@@ -77,8 +79,8 @@ def sky_radiance_spectra(sun, directions: ArrayLike, wavelengths: ArrayLike, inc
     # NOTE: one kernel for all wavelength groups: every direction is repeated once per group of four
     # wavelengths, which are passed as arrays (literal wavelengths would compile a kernel per group).
     si = dr.zeros(mi.SurfaceInteraction3f, count * groups)
-    si.wi = mi.Vector3f(*(mi.Float(np.tile(-flat[:, k], groups)) for k in range(3)))
-    si.wavelengths = mi.Spectrum(*(mi.Float(np.repeat(lanes[:, j], count)) for j in range(_LANES)))
+    si.wi = mi.Vector3f(*(jit_floats(np.tile(-flat[:, k], groups)) for k in range(3)))
+    si.wavelengths = mi.Spectrum(*(jit_floats(np.repeat(lanes[:, j], count)) for j in range(_LANES)))
     values = np.array(emitter.eval(si), dtype=np.float64)  # (4, groups · count)
     if not np.all(np.isfinite(values)):  # a defect to find, not to retry around (sunsky_wavelengths)
         raise RuntimeError(f"Mitsuba's sunsky returned {int(np.sum(~np.isfinite(values)))} non-finite radiances")

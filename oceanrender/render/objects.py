@@ -24,6 +24,7 @@ import numpy as np
 
 from ..optics.tables import read_reflectance_table
 from ..scene import ObjectSettings
+from .buffers import jit_floats, jit_uints
 from .scene import irregular_spectrum
 
 __all__ = ["object_id", "object_bsdf", "object_mesh", "update_object_positions"]
@@ -67,20 +68,14 @@ def object_mesh(obj: ObjectSettings, positions: np.ndarray, faces: np.ndarray, u
     mesh = mi.Mesh(object_id(obj.name), len(positions), len(faces), props, has_vertex_normals=False,
                    has_vertex_texcoords=with_uv)
     params = mi.traverse(mesh)
-    params["vertex_positions"] = _floats(positions)
-    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
+    params["vertex_positions"] = jit_floats(positions)
+    params["faces"] = jit_uints(faces)
     if with_uv:
-        params["vertex_texcoords"] = _floats(uv)
+        params["vertex_texcoords"] = jit_floats(uv)
     params.update()
     return mesh
 
 
 def update_object_positions(params, name: str, positions: np.ndarray) -> None:
     """Move a loaded object's vertices to ``positions`` (V, 3) [m], in place (call ``params.update()`` after)."""
-    params[f"{object_id(name)}.vertex_positions"] = _floats(positions)
-
-
-def _floats(array: np.ndarray):
-    import mitsuba as mi  # noqa: PLC0415
-
-    return mi.Float(np.ascontiguousarray(array, dtype=np.float32).ravel())
+    params[f"{object_id(name)}.vertex_positions"] = jit_floats(positions)

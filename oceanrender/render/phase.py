@@ -31,6 +31,8 @@ from __future__ import annotations
 
 import math
 
+from .buffers import jit_floats
+
 __all__ = ["PHASE_PLUGIN", "register"]
 
 PHASE_PLUGIN = "oceanrender_water_phase"
@@ -214,9 +216,9 @@ def tabulated_phase_class():
             values = np.array([float(x) for x in props["values"].split(",")]).reshape(int(count), mu.size)
             p, cdf = tabulated_phase_rows(mu, values)
             self.first, self.step, self.rows, self.m = first, step, int(count), mu.size
-            self.mu = mi.Float(mu)
-            self.p = mi.Float(p.ravel())
-            self.cdf = mi.Float(cdf.ravel())
+            self.mu = jit_floats(mu)
+            self.p = jit_floats(p)
+            self.cdf = jit_floats(cdf)
             self.m_flags = mi.PhaseFunctionFlags.Anisotropic
 
         def _row(self, wavelength):

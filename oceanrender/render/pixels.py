@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .buffers import jit_bools, jit_uints
 from .scene import K_M, cmf_response_spectra
 
 #: Sample slots per kernel launch [-]: one compiled kernel for every pass (2¹⁷, ≈ 0.4 s here).
@@ -101,7 +102,7 @@ class PixelSampler:
         spectra = cmf_response_spectra()
         self.responses = [mi.load_dict({"type": "spectrum", "value": spectra[k]}) for k in ("X", "Y", "Z")]
 
-    def _launch(self, pixels: np.ndarray, seed: int) -> np.ndarray:
+    def launch(self, pixels: np.ndarray, seed: int) -> np.ndarray:
         """XYZ [cd m⁻²] of one sample for each of up to ``lanes`` pixel indices → (N, 3)."""
         import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
@@ -109,8 +110,8 @@ class PixelSampler:
         n = pixels.size
         padded = np.zeros(self.lanes, dtype=np.uint32)
         padded[:n] = pixels
-        active = mi.Bool(np.arange(self.lanes) < n)
-        index = mi.UInt32(padded)
+        active = jit_bools(np.arange(self.lanes) < n)
+        index = jit_uints(padded)
         sampler = self.sampler
         sampler.seed(dr.opaque(mi.UInt32, int(seed) % (1 << 32)), self.lanes)
         x = mi.Float(index % self.width + self.offset[0])
@@ -143,7 +144,7 @@ class PixelSampler:
         slots = np.repeat(np.arange(flat.size, dtype=np.int64), flat)
         for k, start in enumerate(range(0, slots.size, self.lanes)):
             pixels = slots[start:start + self.lanes]
-            sums.add(pixels, self._launch(pixels, seed + k))
+            sums.add(pixels, self.launch(pixels, seed + k))
         return sums
 
 
@@ -195,7 +196,7 @@ def block_means(sampler: PixelSampler, pixels: np.ndarray, blocks: np.ndarray, s
     n = shape[0] * shape[1]
     sums = np.zeros((n, 3))
     for k, start in enumerate(range(0, pixels.size, sampler.lanes)):
-        xyz = sampler._launch(pixels[start:start + sampler.lanes].astype(np.uint32), seed + k)
+        xyz = sampler.launch(pixels[start:start + sampler.lanes].astype(np.uint32), seed + k)
         for c in range(3):
             sums[:, c] += np.bincount(blocks[start:start + sampler.lanes], weights=xyz[:, c], minlength=n)
     counts = np.bincount(blocks, minlength=n)

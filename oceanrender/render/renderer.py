@@ -6,7 +6,9 @@ Per frame only the water mesh's vertex positions and normals change, through
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 import numpy as np
 
@@ -17,6 +19,7 @@ from ..optics.water import MediumOptics, WaterIOPs
 from ..scene import Scene
 from ..scene.motion import CameraPose, SunAngles
 from ..surface.frame import FrameGeometry, Terrain
+from .buffers import jit_floats, jit_uints
 from .environment import sky_emitters
 from .objects import object_id, object_mesh, update_object_positions
 from .scene import (
@@ -36,6 +39,8 @@ from .scene import (
     white_plane_meter,
     xyz_film,
 )
+
+T = TypeVar("T")
 
 
 #: Identifier of the water body in the Mitsuba scene.
@@ -114,13 +119,6 @@ def repair_non_finite(image: np.ndarray) -> tuple[np.ndarray, int]:
 FOAM_ATTRIBUTE = "vertex_foam"
 
 
-def mitsuba_floats(array: np.ndarray):
-    """A flat ``mi.Float`` of ``array`` as float32 (Mitsuba's vertex buffers)."""
-    import mitsuba as mi  # noqa: PLC0415
-
-    return mi.Float(np.ascontiguousarray(array, dtype=np.float32).ravel())
-
-
 def load_water_medium(medium: dict):
     """The water's medium (:func:`~oceanrender.render.scene.water_medium`) as a loaded Mitsuba object,
     to be shared by the water body (its interior) and a camera under the water (its sensor's medium)."""
@@ -142,8 +140,8 @@ def join_attributes(geometry: FrameGeometry) -> dict:
     if join is None:
         return {}
     factors = np.column_stack([join.short_taper, join.foam_scale, join.foam_offset])
-    return {SEA_NORMAL_ATTRIBUTE: mitsuba_floats(join.sea_normals), SEA_POSITION_ATTRIBUTE: mitsuba_floats(join.sea_positions),
-            JOIN_ATTRIBUTE: mitsuba_floats(factors)}
+    return {SEA_NORMAL_ATTRIBUTE: jit_floats(join.sea_normals), SEA_POSITION_ATTRIBUTE: jit_floats(join.sea_positions),
+            JOIN_ATTRIBUTE: jit_floats(factors)}
 
 
 def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=None):
@@ -158,17 +156,17 @@ def water_mesh(faces: np.ndarray, geometry: FrameGeometry, bsdf: dict, medium=No
     mesh = mi.Mesh(WATER_ID, len(geometry.positions), len(faces), props, has_vertex_normals=True,
                    has_vertex_texcoords=geometry.shading is not None)
     if geometry.foam is not None:
-        mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(geometry.foam))
+        mesh.add_attribute(FOAM_ATTRIBUTE, 1, jit_floats(geometry.foam))
     if geometry.roughness is not None:
-        mesh.add_attribute(ROUGHNESS_ATTRIBUTE, 1, mitsuba_floats(geometry.roughness))
+        mesh.add_attribute(ROUGHNESS_ATTRIBUTE, 1, jit_floats(geometry.roughness))
     for name, values in join_attributes(geometry).items():
         mesh.add_attribute(name, 3, values)
     params = mi.traverse(mesh)
-    params["vertex_positions"] = mitsuba_floats(geometry.positions)
-    params["vertex_normals"] = mitsuba_floats(geometry.normals)
+    params["vertex_positions"] = jit_floats(geometry.positions)
+    params["vertex_normals"] = jit_floats(geometry.normals)
     if geometry.shading is not None:
-        params["vertex_texcoords"] = mitsuba_floats(geometry.shading.texcoords)
-    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
+        params["vertex_texcoords"] = jit_floats(geometry.shading.texcoords)
+    params["faces"] = jit_uints(faces)
     params.update()
     return mesh
 
@@ -205,12 +203,10 @@ def surface_foam_weight(geometry: FrameGeometry, shading):
         return None
     if getattr(shading, "foam_layout", None) is not None:
         return shading.foam_at
-    import mitsuba as mi  # noqa: PLC0415
-
     from .sea_shading import lace_weight  # noqa: PLC0415
 
     lace = geometry.foam_lace
-    tile = None if lace is None else mi.Float(np.ascontiguousarray(lace[0], np.float32).ravel())
+    tile = None if lace is None else jit_floats(lace[0])
 
     def weight(si, active=True):
         fresh = si.shape.eval_attribute_1(FOAM_ATTRIBUTE, si, active)
@@ -257,11 +253,11 @@ def terrain_shape(terrain: Terrain):
         "bsdf_1": {"type": "diffuse", "reflectance": linear_albedo_spectrum(terrain.rock_albedo)},
     })
     mesh = mi.Mesh(TERRAIN_ID, len(terrain.positions), len(terrain.faces), props, has_vertex_normals=True)
-    mesh.add_attribute(ROCK_ATTRIBUTE, 1, mitsuba_floats(terrain.rock))
+    mesh.add_attribute(ROCK_ATTRIBUTE, 1, jit_floats(terrain.rock))
     params = mi.traverse(mesh)
-    params["vertex_positions"] = mitsuba_floats(terrain.positions)
-    params["vertex_normals"] = mitsuba_floats(terrain.normals)
-    params["faces"] = mi.UInt32(np.ascontiguousarray(terrain.faces, dtype=np.uint32).ravel())
+    params["vertex_positions"] = jit_floats(terrain.positions)
+    params["vertex_normals"] = jit_floats(terrain.normals)
+    params["faces"] = jit_uints(terrain.faces)
     params.update()
     return mesh
 
@@ -319,14 +315,14 @@ def terrain_shapes(terrain: Terrain | None) -> dict:
 
 def update_water_parameters(params, geometry: FrameGeometry) -> None:
     """Write a frame's vertex positions [m], normals, foam and roughness into a loaded scene's water mesh."""
-    params[f"{WATER_ID}.vertex_positions"] = mitsuba_floats(geometry.positions)
-    params[f"{WATER_ID}.vertex_normals"] = mitsuba_floats(geometry.normals)
+    params[f"{WATER_ID}.vertex_positions"] = jit_floats(geometry.positions)
+    params[f"{WATER_ID}.vertex_normals"] = jit_floats(geometry.normals)
     if geometry.foam is not None:
-        params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = mitsuba_floats(geometry.foam)
+        params[f"{WATER_ID}.{FOAM_ATTRIBUTE}"] = jit_floats(geometry.foam)
     if geometry.roughness is not None:
-        params[f"{WATER_ID}.{ROUGHNESS_ATTRIBUTE}"] = mitsuba_floats(geometry.roughness)
+        params[f"{WATER_ID}.{ROUGHNESS_ATTRIBUTE}"] = jit_floats(geometry.roughness)
     if geometry.shading is not None:
-        params[f"{WATER_ID}.vertex_texcoords"] = mitsuba_floats(geometry.shading.texcoords)
+        params[f"{WATER_ID}.vertex_texcoords"] = jit_floats(geometry.shading.texcoords)
     for name, values in join_attributes(geometry).items():
         params[f"{WATER_ID}.{name}"] = values
     params.update()
@@ -407,6 +403,8 @@ class WaterRenderer:
     caustics_for: tuple | None = None
     #: sensor → the :class:`~.pixels.PixelSampler` of each pass (:meth:`block_xyz`), made on first use.
     pixel_samplers: dict = field(default_factory=dict)
+    #: The geometry :meth:`update_water` last loaded (None: the one :meth:`build` loaded, or none).
+    water: FrameGeometry | None = None
 
     @classmethod
     def build(cls, settings: Scene, iops: WaterIOPs | MediumOptics, faces: np.ndarray, geometry: FrameGeometry,
@@ -587,9 +585,11 @@ class WaterRenderer:
         """Replace the water mesh's vertex positions [m], unit normals and foam in place (and the sea's
         shading fields). ``floor_map`` False: the floor's map is left out of the next renders (the path
         tracer lights the floor alone, unbiased: the meter's quick renders of other frames need no map)."""
-        update_water_parameters(self.params, geometry)
-        if self.shading is not None and geometry.shading is not None:
-            self.shading.update(geometry.shading)
+        if geometry is not self.water:  # (the meter's reading of the frame just rendered: its water is loaded)
+            update_water_parameters(self.params, geometry)
+            if self.shading is not None and geometry.shading is not None:
+                self.shading.update(geometry.shading)
+            self.water = geometry
         if not floor_map and self.floor_caustics is not None:
             self.floor_caustics.leave_out()
             self.caustics_for = None
@@ -643,6 +643,50 @@ class WaterRenderer:
             for sensor in (0, 1):
                 _block_samplers(self, sensor)
 
+    def compile_blocks(self) -> None:
+        """Compile :meth:`block_xyz`'s kernels for the sensor the camera is in now, rendering nothing (every
+        lane masked off), so that a later :meth:`block_xyz` finds them compiled (JIT variants; else nothing).
+
+        A kernel's code depends on the scene's structure, not on its values: compiled while the scene holds a
+        stand-in for its first water body, it is the kernel the real one runs (docs/architecture.md).
+        """
+        import mitsuba as mi  # noqa: PLC0415
+
+        if mi.variant().startswith(("llvm", "cuda")):
+            for sampler in _block_samplers(self, 1 if self.camera_in_water() else 0):
+                sampler.launch(np.zeros(0, dtype=np.uint32), seed=0)
+
+    def compile_blocks_beside(self, work: Callable[[], T]) -> T:
+        """``work()`` in this thread while another compiles :meth:`compile_blocks`; its result.
+
+        ``work`` must not touch Mitsuba or Dr.Jit (the other thread traces the scene); numpy work
+        overlaps, as LLVM compiles with Python's lock released (docs/BENCHMARKS.md). Dr.Jit's flags
+        are per thread: the compiling thread takes this one's (``PacketOps`` off,
+        :func:`~oceanrender.runtime.variants.steady_kernels`), so its kernels are the ones this
+        thread will run. An error of either is raised, after both have finished.
+        """
+        from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415
+
+        flags = jit_flags()
+
+        def compile_here():
+            import drjit as dr  # noqa: PLC0415
+
+            for flag, value in flags.items():
+                if dr.flag(flag) != value:
+                    dr.set_flag(flag, value)
+            self.compile_blocks()
+
+        with ThreadPoolExecutor(max_workers=1, thread_name_prefix="compile-blocks") as pool:
+            compiling = pool.submit(compile_here)
+            try:
+                result = work()
+            finally:
+                error = compiling.exception()  # waits: the scene is this thread's again only after it
+        if error is not None:
+            raise error
+        return result
+
     def block_xyz(self, columns: int, samples: int, seed: int) -> np.ndarray:
         """Mean XYZ [cd m⁻²] of the blocks of a grid over the view ((rows, columns, 3)): ``samples`` samples per
         block and pass, at uniform positions in it (:func:`~.pixels.block_slots`), both passes of a frame.
@@ -665,6 +709,13 @@ class WaterRenderer:
         for sampler in samplers[1:]:  # the in-water pass: its own seed stream, as render_xyz
             total = total + block_means(sampler, pixels, blocks, shape, in_water_seed(seed))
         return total
+
+
+def jit_flags() -> dict:
+    """This thread's Dr.Jit flags (``JitFlag`` → bool): a new thread starts from the defaults, not from these."""
+    import drjit as dr  # noqa: PLC0415
+
+    return {flag: bool(dr.flag(flag)) for name, flag in dr.JitFlag.__members__.items() if name != "Default"}
 
 
 def _block_samplers(renderer: "WaterRenderer", sensor: int) -> list:

@@ -100,6 +100,8 @@ import math
 
 import numpy as np
 
+from .buffers import jit_floats, jit_uints
+
 __all__ = ["SHADING_SPACING_PER_FOOTPRINT", "MIN_COSINE", "SEA_NORMAL_ATTRIBUTE", "SEA_POSITION_ATTRIBUTE",
            "JOIN_ATTRIBUTE", "pixel_angle", "SeaShading", "sea_surface", "sea_roughness", "sea_foam", "lace_foam",
            "lace_weight"]
@@ -161,29 +163,39 @@ def pixel_angle(fov_deg: float, width: int) -> float:
     return 2.0 * math.tan(math.radians(float(fov_deg)) / 2.0) / int(width)
 
 
+def level_layout(cascades) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per-level (offset [nodes], resolution, spacing [m]) of :class:`ShadingFields` cascades (:func:`level_tables`).
+
+    Level j of cascade c is entry ``c·M + j`` (M the largest level count), its first node at
+    ``offsets``; entries of empty levels have resolution 0 (their fields are zero).
+    """
+    width = max(c.level_count for c in cascades)
+    offsets = np.zeros(len(cascades) * width, np.uint32)
+    sizes = np.zeros(len(cascades) * width, np.uint32)
+    spacings = np.ones(len(cascades) * width, np.float32)
+    start = 0
+    for c, cascade in enumerate(cascades):
+        for j, level in enumerate(cascade.levels):
+            n = level.shape[0]
+            offsets[c * width + j], sizes[c * width + j] = start, n
+            spacings[c * width + j] = cascade.patch_size / n
+            start += n * n
+    if start * len(NORMAL_CHANNELS) >= 2**32:
+        raise ValueError("the shading fields exceed 2³² values")
+    return offsets, sizes, spacings
+
+
 def level_tables(cascades) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Flat field buffers and per-level (offset, resolution, spacing) of :class:`ShadingFields` cascades.
 
     Returns (positions, normals, offsets, sizes, spacings): the levels' channels
     :data:`POSITION_CHANNELS` (η, D_x, D_y: 3 a node) and :data:`NORMAL_CHANNELS` (5 a node), node
     after node, in two buffers: the many hits that need only the normal read 20 bytes a node.
-    Level j of cascade c is entry ``c·M + j`` of the tables (M the largest level count), its first
-    node at ``offsets`` [nodes]; entries of empty levels have resolution 0 (their fields are zero).
+    The tables are :func:`level_layout`'s.
     """
-    width = max(c.level_count for c in cascades)
-    offsets = np.zeros(len(cascades) * width, np.uint32)
-    sizes = np.zeros(len(cascades) * width, np.uint32)
-    spacings = np.ones(len(cascades) * width, np.float32)
-    levels, start = [], 0
-    for c, cascade in enumerate(cascades):
-        for j, level in enumerate(cascade.levels):
-            n = level.shape[0]
-            offsets[c * width + j], sizes[c * width + j] = start, n
-            spacings[c * width + j] = cascade.patch_size / n
-            levels.append(level.reshape(n * n, -1))
-            start += n * n
-    if start * len(NORMAL_CHANNELS) >= 2**32:
-        raise ValueError("the shading fields exceed 2³² values")
+    offsets, sizes, spacings = level_layout(cascades)
+    levels = [level.reshape(level.shape[0] ** 2, -1) for cascade in cascades for level in cascade.levels]
+    start = sum(len(level) for level in levels)
     positions = np.empty((start, len(POSITION_CHANNELS)), np.float32)
     normals = np.empty((start, len(NORMAL_CHANNELS)), np.float32)
     row = 0
@@ -236,9 +248,9 @@ class SeaShading:
         self.width = max(c.level_count for c in fields.cascades)
         self.band_tops = [c.band_top for c in fields.cascades]
         self.counts = [c.level_count for c in fields.cascades]
-        _, _, offsets, sizes, spacings = level_tables(fields.cascades)
+        offsets, sizes, spacings = level_layout(fields.cascades)
         #: the first node of each level [nodes]
-        self.offsets, self.sizes, self.spacings = mi.UInt32(offsets), mi.UInt32(sizes), mi.Float(spacings)
+        self.offsets, self.sizes, self.spacings = jit_uints(offsets), jit_uints(sizes), jit_floats(spacings)
         self.log_spacing_0 = float(np.log(fields.spacing[0]))
         self.log_spacing_step = float(np.log(fields.spacing[1] / fields.spacing[0]))
         self.table_size = int(fields.spacing.size)
@@ -265,9 +277,9 @@ class SeaShading:
         spacing = np.asarray(fields.spacing, float)
         if not np.allclose(np.diff(np.log(spacing)), self.log_spacing_step) or spacing.size != self.table_size:
             raise ValueError("the α table must keep the first frame's log-spaced shading spacings")
-        self.position_values, self.normal_values = mi.Float(positions), mi.Float(normals)
+        self.position_values, self.normal_values = jit_floats(positions), jit_floats(normals)
         dr.make_opaque(self.position_values, self.normal_values)
-        self.alpha = mi.Float(np.asarray(fields.alpha, np.float32))
+        self.alpha = jit_floats(fields.alpha)
         self.origin = mi.Point2f(float(fields.origin[0]), float(fields.origin[1]))
         dr.make_opaque(self.alpha, self.origin)
         foam = fields.foam
@@ -277,8 +289,8 @@ class SeaShading:
         if foam is not None:
             self.foam_rings, self.foam_segments = int(foam.rings), int(foam.segments)
             self.lace_n = int(foam.lace.shape[0])
-            self.foam_fresh = mi.Float(np.asarray(foam.fresh, np.float32))
-            self.lace = mi.Float(np.ascontiguousarray(foam.lace, np.float32).ravel())
+            self.foam_fresh = jit_floats(foam.fresh)
+            self.lace = jit_floats(foam.lace)
             # (centre x, centre y, inner radius, ln ratio per ring, outer radius, outside B, lace size)
             self.foam_params = [mi.Float(float(v)) for v in (
                 foam.center[0], foam.center[1], foam.inner_radius,
@@ -669,7 +681,7 @@ def _define_classes() -> tuple[type, type, type, type]:
 
         def attach(self, nested, lace, size: float) -> "LaceFoam":
             self.nested, self.n, self.size = nested, int(lace.shape[0]), float(size)
-            self.lace = mi.Float(np.ascontiguousarray(lace, np.float32).ravel())
+            self.lace = jit_floats(lace)
             dr.make_opaque(self.lace)
             return self
 

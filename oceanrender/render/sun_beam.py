@@ -26,6 +26,8 @@ import math
 
 import numpy as np
 
+from .buffers import jit_floats
+
 __all__ = ["sun_rays", "splat_plane", "splat_points", "TerrainCaustics", "view_centre", "camera_water_hits", "ray_window", "device_plane_irradiance", "FloorCaustics", "VolumeBeam", "SUN_CONE"]
 
 
@@ -241,7 +243,6 @@ def blur_by_path(power, path_power, count: int, cell: float, spread: float):
     rays within :data:`PATH_SMOOTHING` cells (a gather: on a floor of slowly varying depth every cell near a
     point takes the point's width, so its power is kept).
     """
-    import mitsuba as mi  # noqa: PLC0415
     from scipy.ndimage import gaussian_filter  # noqa: PLC0415
 
     if spread <= 0.0:
@@ -262,7 +263,7 @@ def blur_by_path(power, path_power, count: int, cell: float, spread: float):
         blurred = [a if sigma == 0 else gaussian_filter(a, sigma, mode="mirror") for a in (e, es)]
         out_e += share * blurred[0]
         out_es += share * blurred[1]
-    return mi.Float(out_e.ravel().astype(np.float32)), mi.Float(out_es.ravel().astype(np.float32))
+    return jit_floats(out_e), jit_floats(out_es)
 
 
 class _BeamMap:
@@ -281,7 +282,7 @@ class _BeamMap:
         self.sun = mi.Vector3f(*(float(c) for c in sun))
         self.wavelength_0 = float(wavelengths[0])
         self.wavelength_step = float(wavelengths[1] - wavelengths[0])
-        self.spectrum = mi.Float(np.asarray(sun_spectrum, np.float32))
+        self.spectrum = jit_floats(sun_spectrum)
         dr.make_opaque(self.sun, self.spectrum)
 
     def in_cone(self, direction):

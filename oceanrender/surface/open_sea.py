@@ -508,6 +508,45 @@ class WaterBody:
                          grid.outer_radius, grid.rings, grid.segments, np.asarray(fresh, np.float32),
                          float(self._foam_mean[1]), foam_lace(self.scene), LACE_SIZE)
 
+    def frame_layout(self, t: float) -> FrameGeometry | None:
+        """A calm stand-in for :meth:`frame` at t [s]: the same vertices, attributes and array shapes, with the
+        sea at rest (no displacement, normals up, no foam, zero level fields, α = 0), in milliseconds (no FFT, no
+        foam history); None for the patch mesh.
+
+        For loading the renderer and compiling its kernels while the real frame is computed
+        (:class:`~oceanrender.pipeline.Sequence`): a kernel's code depends on which arrays there are and
+        their sizes, never on their values. What a loaded scene keeps from its first geometry is the same as
+        the real frame's: the body's skirt and bottom hang from the far ring, which no wave displaces (the
+        seafloor's extent is taken from them), so only the radial mesh has a stand-in.
+        """
+        if self.radial is None:
+            return None
+        grid = self.grid_at(t)
+        far = horizon_radius(self.camera_height(t), self.radial.outer_radius, self.radial.segments)
+        up = np.tile([0.0, 0.0, 1.0], (len(grid.points), 1))
+        positions, normals = radial_body_vertices(grid, np.zeros((len(grid.points), 3)), up, self.scene.water.depth,
+                                                  far_radius=far)
+        count = len(positions)
+        foam = np.zeros(count, np.float32) if self.scene.foam.enabled else None
+        roughness = np.zeros(count, np.float32) if self.per_vertex_roughness else None
+        shading = None
+        if self.shades_from_fields:
+            cascades = tuple(
+                ShadingCascade(float(levels.grid.patch_size), float(levels.band_top),
+                               tuple(np.zeros((o.grid.resolution, o.grid.resolution, len(SHADING_NAMES)), np.float32)
+                                     for o in levels.oceans[:-1]))
+                for levels in self.sea.levels)
+            coords, origin = self.texcoords(t, count)
+            foam_field = None
+            if self.foam_grid is not None:
+                g = self.foam_grid_at(t)
+                foam_field = FoamField((g.center[0] - origin[0], g.center[1] - origin[1]), g.inner_radius,
+                                       g.outer_radius, g.rings, g.segments, np.zeros(len(g.points), np.float32),
+                                       0.0, foam_lace(self.scene), LACE_SIZE)
+            shading = ShadingFields(cascades, SHADING_SPACINGS, np.zeros(SHADING_SPACINGS.size), origin, coords,
+                                    foam_field)
+        return FrameGeometry(positions, normals, foam, roughness, shading, scene_foam_lace(self.scene))
+
     def frame(self, t: float) -> FrameGeometry:
         """The closed body at time t [s]; its ``foam`` is the fresh-foam coverage B (:meth:`vertex_foam`)."""
         depth = self.scene.water.depth

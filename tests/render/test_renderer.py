@@ -88,7 +88,8 @@ def test_foam_layer_reflects_fresh_foam_on_its_fraction(variant):
     import mitsuba as mi
 
     from oceanrender.optics.foam import foam_spectral_factor_Frouin1996
-    from oceanrender.render.renderer import FOAM_ATTRIBUTE, foamy_surface_bsdf, mitsuba_floats
+    from oceanrender.render.buffers import jit_floats
+    from oceanrender.render.renderer import FOAM_ATTRIBUTE, foamy_surface_bsdf
 
     cmfs = colour.MSDS_CMFS[CIE1931].copy().trim(colour.SpectralShape(360, 830, 1))
     ybar = cmfs.values[:, 1]
@@ -98,9 +99,9 @@ def test_foam_layer_reflects_fresh_foam_on_its_fraction(variant):
         props = mi.Properties()
         props["bsdf"] = mi.load_dict(foamy_surface_bsdf(stand_in, 0.55))
         mesh = mi.Mesh("quad", 4, 2, props)
-        mesh.add_attribute(FOAM_ATTRIBUTE, 1, mitsuba_floats(np.full(4, weight)))
+        mesh.add_attribute(FOAM_ATTRIBUTE, 1, jit_floats(np.full(4, weight)))
         params = mi.traverse(mesh)
-        params["vertex_positions"] = mitsuba_floats([[-50, -50, 0], [50, -50, 0], [50, 50, 0], [-50, 50, 0]])
+        params["vertex_positions"] = jit_floats([[-50, -50, 0], [50, -50, 0], [50, 50, 0], [-50, 50, 0]])
         params["faces"] = mi.UInt32([0, 1, 2, 0, 2, 3])
         params.update()
         scene = mi.load_dict({

@@ -254,3 +254,46 @@ def test_smoothed_polar_keeps_the_mean_and_rounds_a_single_node():
     rings = smooth[1:].reshape(grid.rings, 64)
     assert rings[30, 0] == pytest.approx(rings[30, 62], rel=1e-6)  # periodic in angle: symmetric across the wrap
     assert rings[29, 63] == pytest.approx(rings[30, 62], rel=1e-6)  # round: the same one cell away either way
+
+
+def _layout(geometry):
+    """Which arrays a frame has, their shapes and types, nested through its shading fields."""
+    def shape(a):
+        return None if a is None else (np.shape(a), np.asarray(a).dtype)
+
+    fields = geometry.shading
+    shading = None if fields is None else (
+        [(c.patch_size, c.band_top, [shape(level) for level in c.levels]) for c in fields.cascades],
+        shape(fields.spacing), shape(fields.alpha), shape(fields.texcoords), fields.join is None,
+        None if fields.foam is None else (fields.foam.rings, fields.foam.segments, shape(fields.foam.fresh),
+                                          shape(fields.foam.lace), fields.foam.lace_size))
+    lace = None if geometry.foam_lace is None else (shape(geometry.foam_lace[0]), geometry.foam_lace[1])
+    return (shape(geometry.positions), shape(geometry.normals), shape(geometry.foam), shape(geometry.roughness),
+            shading, lace)
+
+
+@pytest.mark.parametrize("sections", [
+    {},
+    {"foam": {"enabled": False}},
+    {"render": {"surface_shading": "vertex"}},
+    {"water": {"surface_roughness": 0.1}},
+])
+def test_the_calm_stand_in_has_the_frame_s_layout(sections):
+    # The renderer is loaded with the stand-in while the real frame is computed: every array the frame has,
+    # the stand-in has, with the same shape and type; and what a loaded scene keeps from its first geometry
+    # (the skirt and bottom, from which the seafloor's extent is taken) is the frame's exactly.
+    base = {"ocean": {"resolution": 32, "patch_size": 64.0, "cascades": 2, "wind_speed": 12.0},
+            "mesh": {"kind": "radial", "outer_radius": 300.0, "segments": 32},
+            "foam": {"enabled": True, "radius": 20.0, "history": 0.5},
+            "camera": {"position": [4.0, 1.0, 5.0], "target": [4.0, 30.0, 0.0]}}
+    body = WaterBody(scene_from_dict({"name": "t", **{**base, **sections}}))
+    stand_in, frame = body.frame_layout(0.5), body.frame(0.5)
+    assert _layout(stand_in) == _layout(frame)
+    rest = len(body.grid_at(0.5).points)  # the top vertices; then the far ring, the skirt and the bottom
+    np.testing.assert_array_equal(stand_in.positions[rest:], frame.positions[rest:])
+    # the sea at rest: the top vertices at z = 0, facing up
+    assert np.all(stand_in.positions[:rest, 2] == 0.0) and np.all(stand_in.normals[:rest, 2] == 1.0)
+
+
+def test_the_patch_mesh_has_no_stand_in():
+    assert WaterBody(scene(mesh={"kind": "patch"})).frame_layout(0.0) is None
