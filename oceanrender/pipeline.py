@@ -168,8 +168,8 @@ class Sequence:
         self.faces = self.body.faces
         self.iops = water_optics(scene)
         first_frame = scene.output.frames[0] if first_frame is None else first_frame
-        # A calm stand-in of the first frame's water loads the scene when the meter's kernels can compile while
-        # the real water is computed (_first_geometry); else the real one, computed now.
+        # A calm stand-in of the first frame's water loads the scene when the kernels can compile while the real
+        # water is computed (_first_geometry); else the real one, computed now.
         stand_in = self._stand_in(first_frame)
         first = self.geometry(first_frame) if stand_in is None else stand_in
         self.roughness = surface_roughness(scene, self.body)
@@ -216,19 +216,18 @@ class Sequence:
         self._map_illuminance: float | None = None  # [lx], of an [environment] map, measured once
 
     def _stand_in(self, frame: int) -> FrameGeometry | None:
-        """The body's calm stand-in for ``frame`` (``frame_layout``: same arrays, the sea at rest) when the meter's
-        kernels are to be compiled beside the real water (JIT variant, adaptation that follows the view); else None.
-        """
+        """The body's calm stand-in for ``frame`` (``frame_layout``: the same arrays, the sea at rest), to load the
+        scene with while the real water is computed beside the kernels' compilation (JIT variants); else None."""
         layout = getattr(self.body, "frame_layout", None)
-        if layout is None or not self.follows_adaptation or not self.variant.startswith(("llvm", "cuda")):
+        if layout is None or not self.variant.startswith(("llvm", "cuda")):
             return None
         return layout(self.time_of(frame))
 
     def _first_geometry(self, frame: int) -> FrameGeometry:
-        """``frame``'s water, computed (numpy) while another thread compiles the meter's kernels
-        (:meth:`~oceanrender.render.renderer.WaterRenderer.compile_blocks_beside`; measured on the default
-        scene with a cold kernel cache: ~9 s of compilation beside ~10 s of sea, BENCHMARKS.md)."""
-        return self.renderer.compile_blocks_beside(lambda: self.geometry(frame))
+        """``frame``'s water, computed (numpy) while another thread compiles the frame's kernels and the meter's
+        (:meth:`~oceanrender.render.renderer.WaterRenderer.compile_kernels_beside`; measured on the default
+        scene with a cold kernel cache: ~18 s of compilation beside ~10 s of sea, BENCHMARKS.md)."""
+        return self.renderer.compile_kernels_beside(lambda: self.geometry(frame), self.spp, self.follows_adaptation)
 
     def _measure_white(self, frame: int) -> None:
         """The adapting white [cd m⁻²] under the sun of ``frame`` (:attr:`sun_angles`), measured once per frame."""

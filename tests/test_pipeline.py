@@ -311,6 +311,34 @@ def test_followed_adaptation_depends_on_the_frame_alone(variant):
     assert "followed over time" in frames[3].metadata["adaptation"]
 
 
+@pytest.mark.slow
+def test_the_first_frame_runs_the_kernels_compiled_beside_its_sea(variant, monkeypatch):
+    # A radial sea loads the scene with a calm stand-in of frame 0 (the same arrays, the sea at rest), and a
+    # second thread compiles the frame's and the meter's kernels while the real frame 0 is computed. Frame 0
+    # then compiles nothing: each of its large kernels (render passes, meter passes) is found in memory, not
+    # compiled nor read from the disk cache (a kernel traced differently would be one or the other). And it
+    # renders what a scene loaded with the real frame 0 renders.
+    import drjit as dr
+
+    scene = tiny_scene(mesh={"kind": "radial", "outer_radius": 300.0, "segments": 32},
+                       ocean={"resolution": 16, "patch_size": 40.0, "cascades": 2})
+    run = Sequence(scene, variant)
+    assert run.body.frame_layout(0.0) is not None and run.follows_adaptation
+    with dr.scoped_set_flag(dr.JitFlag.KernelHistory, True):
+        dr.kernel_history()  # (emptied; the flag and the history are this thread's)
+        frame = run.compute_frame(0)
+        large = [k for k in dr.kernel_history() if k["type"] == dr.KernelType.JIT and k["operation_count"] > 10_000]
+    assert len(large) >= 2  # the render's pass(es) and the meter's
+    assert all(k["cache_hit"] and not k["cache_disk"] for k in large), [(k["cache_hit"], k["cache_disk"]) for k in large]
+    monkeypatch.setattr(Sequence, "_stand_in", lambda self, frame: None)  # loaded with the real frame 0
+    direct = Sequence(scene, variant).compute_frame(0)
+    # float32 films: the same vertices and seed agree to the last bits (observed: exactly, every channel)
+    for name in "XYZ":
+        np.testing.assert_allclose(frame.channels[name], direct.channels[name], rtol=ROUNDOFF32)
+    assert frame.metadata["adaptation_luminance_cd_m2"] == pytest.approx(
+        direct.metadata["adaptation_luminance_cd_m2"], rel=ROUNDOFF32)
+
+
 def test_zero_adaptation_time_adapts_each_frame_to_itself(variant):
     from oceanrender.vision.brightness import adaptation_luminance_log_average
 

@@ -619,6 +619,14 @@ class WaterRenderer:
             beam_map.update(self.shading, sun_direction(sun.elevation, sun.azimuth), sun_normal_irradiance(sun),
                             SUN_WAVELENGTHS_NM, self.camera_position[:2])
 
+    def render_film(self, spp: int, seed: int, sensor: int) -> np.ndarray:
+        """The mean film (H, W, C) of a frame of ``spp`` samples seen by ``sensor`` (0: the air's, 1: the water's):
+        the rest, plus the in-water pass for a camera in the air (:meth:`render_xyz`)."""
+        film = render_passes(self.scene, int(spp), int(seed), sensor=sensor)
+        if self.in_water is not None and sensor == 0:  # under the water nothing is split: one pass is the frame
+            film = film + render_passes(self.scene, self.in_water_spp(spp), in_water_seed(seed), self.in_water)
+        return film
+
     def render_xyz(self, spp: int, seed: int) -> tuple[np.ndarray, int]:
         """Render one frame → (absolute XYZ (H, W, 3) [cd m⁻²], repaired pixel count).
 
@@ -627,10 +635,7 @@ class WaterRenderer:
         passes estimate disjoint parts of each sample's radiance, so their sum is unbiased.
         """
         self.last_camera_in_water = self.camera_in_water()
-        sensor = 1 if self.last_camera_in_water else 0
-        film = render_passes(self.scene, int(spp), int(seed), sensor=sensor)
-        if self.in_water is not None and sensor == 0:  # under the water nothing is split: one pass is the frame
-            film = film + render_passes(self.scene, self.in_water_spp(spp), in_water_seed(seed), self.in_water)
+        film = self.render_film(spp, seed, 1 if self.last_camera_in_water else 0)
         if self.bands:
             self.last_bands = repair_non_finite(np.asarray(film[..., 3:], dtype=np.float64))[0]
         return repair_non_finite(film_to_absolute_XYZ(film[..., :3]))
@@ -643,21 +648,38 @@ class WaterRenderer:
             for sensor in (0, 1):
                 _block_samplers(self, sensor)
 
-    def compile_blocks(self) -> None:
-        """Compile :meth:`block_xyz`'s kernels for the sensor the camera is in now, rendering nothing (every
-        lane masked off), so that a later :meth:`block_xyz` finds them compiled (JIT variants; else nothing).
+    def compile_kernels(self, spp: int | None, blocks: bool = True) -> None:
+        """Compile the kernels of a frame of ``spp`` samples (:meth:`render_xyz`; None: not those) and, with
+        ``blocks``, of the meter (:meth:`block_xyz`), for the sensor the camera is in now, rendering next to
+        nothing: the frame's passes with every water triangle collapsed to a point (no ray meets the water;
+        the loaded water is put back after), then the meter's launches with all lanes masked off. JIT
+        variants; else nothing.
 
         A kernel's code depends on the scene's structure, not on its values: compiled while the scene holds a
-        stand-in for its first water body, it is the kernel the real one runs (docs/architecture.md).
+        stand-in for its first water body, these are the kernels the real frame runs.
         """
+        import drjit as dr  # noqa: PLC0415
         import mitsuba as mi  # noqa: PLC0415
 
-        if mi.variant().startswith(("llvm", "cuda")):
-            for sampler in _block_samplers(self, 1 if self.camera_in_water() else 0):
+        if not mi.variant().startswith(("llvm", "cuda")):
+            return
+        sensor = 1 if self.camera_in_water() else 0
+        if spp is not None:
+            key = f"{WATER_ID}.vertex_positions"
+            loaded = self.params[key]
+            self.params[key] = dr.zeros(mi.Float, dr.width(loaded))
+            self.params.update()
+            try:
+                self.render_film(spp, 0, sensor)
+            finally:
+                self.params[key] = loaded
+                self.params.update()
+        if blocks:
+            for sampler in _block_samplers(self, sensor):
                 sampler.launch(np.zeros(0, dtype=np.uint32), seed=0)
 
-    def compile_blocks_beside(self, work: Callable[[], T]) -> T:
-        """``work()`` in this thread while another compiles :meth:`compile_blocks`; its result.
+    def compile_kernels_beside(self, work: Callable[[], T], spp: int | None, blocks: bool = True) -> T:
+        """``work()`` in this thread while another runs :meth:`compile_kernels` (``spp``, ``blocks``); its result.
 
         ``work`` must not touch Mitsuba or Dr.Jit (the other thread traces the scene); numpy work
         overlaps, as LLVM compiles with Python's lock released (docs/BENCHMARKS.md). Dr.Jit's flags
@@ -675,7 +697,7 @@ class WaterRenderer:
             for flag, value in flags.items():
                 if dr.flag(flag) != value:
                     dr.set_flag(flag, value)
-            self.compile_blocks()
+            self.compile_kernels(spp, blocks)
 
         with ThreadPoolExecutor(max_workers=1, thread_name_prefix="compile-blocks") as pool:
             compiling = pool.submit(compile_here)
