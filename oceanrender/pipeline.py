@@ -208,8 +208,8 @@ class Sequence:
             self.renderer.prepare_blocks()
         if stand_in is not None:
             first = self._first_geometry(first_frame)
-        # NOTE: the scene is loaded with this frame's geometry (or its stand-in); compute_frame updates the water
-        # to it and reuses it once.
+            self.renderer.update_water(first)  # the scene holds the first frame, as when loaded with it
+        # NOTE: the scene is loaded with this frame's geometry; compute_frame reuses it once.
         self._loaded: tuple[int, FrameGeometry] | None = (first_frame, first)
         self._meters: dict[int, float] = {}  # frame → its meter (log-average) [cd m⁻²]
         self._frame_geometry = None  # (frame, geometry) of the frame compute_frame is metering
@@ -436,8 +436,8 @@ class Sequence:
         passes = self.renderer.passes(self.scene.output.passes) if self.scene.output.passes else {}
         target = None
         if self.follows_adaptation:
-            # NOTE: after the frame's render: the meter's kernels are then compiled once, not again after
-            # the first render of a run (measured: 6 s more on a cold kernel cache, 2 cores).
+            # NOTE: after the frame's render, so the meter reads the water just loaded (no upload); an open sea's
+            # kernels, the meter's included, were compiled beside its first frame's sea (_first_geometry).
             self._frame_geometry = (frame, geometry)  # the meter's reading of this frame uses it too
             adaptation, target = self.followed_adaptation(frame)
             self._frame_geometry = None
