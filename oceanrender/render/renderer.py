@@ -651,9 +651,12 @@ class WaterRenderer:
     def compile_kernels(self, spp: int | None, blocks: bool = True) -> None:
         """Compile the kernels of a frame of ``spp`` samples (:meth:`render_xyz`; None: not those) and, with
         ``blocks``, of the meter (:meth:`block_xyz`), for the sensor the camera is in now, rendering next to
-        nothing: the frame's passes with every water triangle collapsed to a point (no ray meets the water;
-        the loaded water is put back after), then the meter's launches with all lanes masked off. JIT
-        variants; else nothing.
+        nothing: the frame's passes with every water triangle collapsed to a point (no ray meets the water),
+        then the meter's launches with all lanes masked off. JIT variants; else nothing.
+
+        The water is left collapsed: load the frame's with :meth:`update_water` next. (Not put back: measured,
+        the same vertices loaded again after others render a few pixels differently, so a frame's water is
+        loaded once, after.)
 
         A kernel's code depends on the scene's structure, not on its values: compiled while the scene holds a
         stand-in for its first water body, these are the kernels the real frame runs.
@@ -666,14 +669,10 @@ class WaterRenderer:
         sensor = 1 if self.camera_in_water() else 0
         if spp is not None:
             key = f"{WATER_ID}.vertex_positions"
-            loaded = self.params[key]
-            self.params[key] = dr.zeros(mi.Float, dr.width(loaded))
+            self.params[key] = dr.zeros(mi.Float, dr.width(self.params[key]))
             self.params.update()
-            try:
-                self.render_film(spp, 0, sensor)
-            finally:
-                self.params[key] = loaded
-                self.params.update()
+            self.water = None  # (what update_water loaded is gone: the next one loads again)
+            self.render_film(spp, 0, sensor)
         if blocks:
             for sampler in _block_samplers(self, sensor):
                 sampler.launch(np.zeros(0, dtype=np.uint32), seed=0)
@@ -685,7 +684,8 @@ class WaterRenderer:
         overlaps, as LLVM compiles with Python's lock released (docs/BENCHMARKS.md). Dr.Jit's flags
         are per thread: the compiling thread takes this one's (``PacketOps`` off,
         :func:`~oceanrender.runtime.variants.steady_kernels`), so its kernels are the ones this
-        thread will run. An error of either is raised, after both have finished.
+        thread will run. An error of either is raised, after both have finished. The water is then
+        collapsed (:meth:`compile_kernels`): load the frame's next.
         """
         from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415
 
