@@ -681,7 +681,7 @@ class WaterRenderer:
         """``work()`` in this thread while another runs :meth:`compile_kernels` (``spp``, ``blocks``); its result.
 
         ``work`` must not touch Mitsuba or Dr.Jit (the other thread traces the scene); numpy work
-        overlaps, as LLVM compiles with Python's lock released (docs/BENCHMARKS.md). Dr.Jit's flags
+        overlaps, as LLVM compiles with Python's lock released (BENCHMARKS.md). Dr.Jit's flags
         are per thread: the compiling thread takes this one's (``PacketOps`` off,
         :func:`~oceanrender.runtime.variants.steady_kernels`), so its kernels are the ones this
         thread will run. An error of either is raised, after both have finished. The water is then
@@ -699,7 +699,7 @@ class WaterRenderer:
                     dr.set_flag(flag, value)
             self.compile_kernels(spp, blocks)
 
-        with ThreadPoolExecutor(max_workers=1, thread_name_prefix="compile-blocks") as pool:
+        with ThreadPoolExecutor(max_workers=1, thread_name_prefix="compile-kernels") as pool:
             compiling = pool.submit(compile_here)
             try:
                 result = work()
