@@ -7,10 +7,11 @@ a multiple of 64 bytes and ``align 1`` otherwise, and a mesh's vertex buffers
 are read with packet gathers only when aligned. numpy's allocator gives 16-byte
 aligned addresses, sometimes on a 64-byte boundary and sometimes not, so the
 same trace hashed to a new kernel at random, and each new kernel was compiled
-again (measured, default scene on a cold kernel cache: frame 1 recompiled all
-four of frame 0's kernels, 18 s, and frame 2 one of them; the IR differed only
-in those alignments). Every array passed from here starts on a 64-byte
-boundary, so a trace gives one kernel.
+again (measured, default scene on a cold kernel cache: the meter's kernel of
+frame 2 differed from frame 0's in that alignment only, and compiled again;
+with ``PacketOps`` on, frame 1's four kernels also differed, through the mesh's
+packet gathers). Every array passed from here starts on a 64-byte boundary, so
+a trace gives one kernel.
 """
 
 from __future__ import annotations
@@ -24,14 +25,16 @@ ALIGNMENT = 64
 def aligned(array, dtype) -> np.ndarray:
     """``array`` as a C-contiguous ``dtype`` array whose data start on a multiple of :data:`ALIGNMENT` bytes.
 
-    The input itself when it already is one; else a copy into a fresh buffer.
+    The input itself when it already is one; else one copy, converted on the way, into a fresh buffer.
     """
-    source = np.asarray(array, dtype=dtype)
-    if source.flags.c_contiguous and source.ctypes.data % ALIGNMENT == 0:
+    source = np.asarray(array)
+    dtype = np.dtype(dtype)
+    if source.dtype == dtype and source.flags.c_contiguous and source.ctypes.data % ALIGNMENT == 0:
         return source
-    raw = np.empty(source.nbytes + ALIGNMENT, dtype=np.uint8)
+    nbytes = source.size * dtype.itemsize
+    raw = np.empty(nbytes + ALIGNMENT, dtype=np.uint8)
     start = -raw.ctypes.data % ALIGNMENT
-    out = raw[start:start + source.nbytes].view(source.dtype).reshape(source.shape)
+    out = raw[start:start + nbytes].view(dtype).reshape(source.shape)
     out[...] = source
     return out
 
